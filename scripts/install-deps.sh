@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Installs everything Geodesic needs to build and test on Debian 12 (bookworm), as root.
+# Lavapipe with ray tracing needs Mesa >= 24.1, which bookworm only has in backports; the
+# backports entry is derived from the machine's own Debian sources so no mirror is hard-coded.
+set -euo pipefail
+
+if [ "$(id -u)" -ne 0 ]; then
+  echo "install-deps: run as root (apt-get needs it)" >&2
+  exit 1
+fi
+
+export DEBIAN_FRONTEND=noninteractive
+backports_file=/etc/apt/sources.list.d/geodesic-backports.sources
+
+# Prints the URI of the first configured Debian archive that serves the plain 'bookworm' suite.
+debian_archive_uri() {
+  local f
+  for f in /etc/apt/sources.list.d/*.sources; do
+    [ -f "$f" ] || continue
+    awk '
+      /^[[:space:]]*$/ { if (uri != "" && plain) { print uri; exit } uri=""; plain=0; next }
+      /^URIs:/ { uri=$2 }
+      /^Suites:/ { for (i = 2; i <= NF; i++) if ($i == "bookworm") plain=1 }
+      END { if (uri != "" && plain) print uri }
+    ' "$f" | head -n1
+  done
+  for f in /etc/apt/sources.list /etc/apt/sources.list.d/*.list; do
+    [ -f "$f" ] || continue
+    awk '$1 == "deb" && $3 == "bookworm" { print $2; exit }' "$f"
+  done
+}
+
+if ! grep -rqs "bookworm-backports" /etc/apt/sources.list /etc/apt/sources.list.d/; then
+  uri=$(debian_archive_uri | head -n1)
+  if [ -z "$uri" ]; then
+    echo "install-deps: no Debian 'bookworm' entry found in /etc/apt/sources.list*; cannot derive bookworm-backports" >&2
+    exit 1
+  fi
+  cat > "$backports_file" <<SRC
+Types: deb
+URIs: $uri
+Suites: bookworm-backports
+Components: main
+Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
+SRC
+  echo "install-deps: enabled bookworm-backports from $uri"
+fi
+
+apt-get update -qq
+
+apt-get install -y -qq --no-install-recommends \
+  build-essential cmake ninja-build pkg-config git ca-certificates \
+  libvulkan-dev vulkan-tools glslang-tools glslang-dev spirv-tools \
+  nlohmann-json3-dev libopenimageio-dev openimageio-tools \
+  libgtest-dev libgmock-dev libassimp-dev \
+  libboost-dev libboost-system-dev libsqlite3-dev libturbojpeg0-dev \
+  python3
+
+# Lavapipe with VK_KHR_ray_tracing_pipeline (Mesa >= 24.1) from backports.
+apt-get install -y -qq --no-install-recommends -t bookworm-backports mesa-vulkan-drivers
+
+echo "install-deps: done"

@@ -1,0 +1,39 @@
+// `geodesic` command line: render a scene to an image, or list Vulkan devices.
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <string>
+
+namespace geodesic {
+int render_command(int argc, char** argv);
+int devices_command(int argc, char** argv);
+}  // namespace geodesic
+
+namespace {
+
+const char* kUsage =
+    "usage: geodesic <command> [options]\n"
+    "commands:\n"
+    "  render SCENE.json -o OUT.{png,exr,jpg} [--spp N | --time SECONDS] [--width W]\n"
+    "         [--height H] [--max-depth D] [--seed S] [--device NAME|INDEX]\n"
+    "         [--backend auto|ray-query|pipeline]\n"
+    "  devices       list Vulkan devices and whether each can ray-trace\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
+    std::fputs(kUsage, argc < 2 ? stderr : stdout);
+    return argc < 2 ? 2 : 0;
+  }
+  const std::string command = argv[1];
+  try {
+    if (command == "render") return geodesic::render_command(argc - 2, argv + 2);
+    if (command == "devices") return geodesic::devices_command(argc - 2, argv + 2);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "geodesic %s: %s\n", command.c_str(), e.what());
+    return 1;
+  }
+  std::fprintf(stderr, "geodesic: unknown command \"%s\"\n%s", command.c_str(), kUsage);
+  return 2;
+}

@@ -1,0 +1,157 @@
+#include "render/acceleration.h"
+
+#include <utility>
+#include <vector>
+
+namespace geodesic {
+namespace {
+
+constexpr VkBufferUsageFlags kBuildInput =
+    VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_BUILD_INPUT_READ_ONLY_BIT_KHR |
+    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+
+VkDeviceSize align_up(VkDeviceSize value, VkDeviceSize alignment) {
+  return alignment ? (value + alignment - 1) / alignment * alignment : value;
+}
+
+VkAccelerationStructureInstanceKHR instance_of(const AccelerationStructure& blas,
+                                               uint32_t custom_index) {
+  VkAccelerationStructureInstanceKHR instance{};
+  instance.transform.matrix[0][0] = instance.transform.matrix[1][1] =
+      instance.transform.matrix[2][2] = 1.0f;
+  instance.instanceCustomIndex = custom_index;
+  instance.mask = 0xFF;
+  instance.instanceShaderBindingTableRecordOffset = custom_index;
+  instance.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;
+  instance.accelerationStructureReference = blas.address();
+  return instance;
+}
+
+}  // namespace
+
+AccelerationStructure AccelerationStructure::build(
+    VulkanContext& ctx, VkAccelerationStructureTypeKHR type,
+    const VkAccelerationStructureGeometryKHR& geometry, uint32_t primitive_count) {
+  VkAccelerationStructureBuildGeometryInfoKHR info{
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR};
+  info.type = type;
+  info.flags = VK_BUILD_ACCELERATION_STRUCTURE_PREFER_FAST_TRACE_BIT_KHR;
+  info.mode = VK_BUILD_ACCELERATION_STRUCTURE_MODE_BUILD_KHR;
+  info.geometryCount = 1;
+  info.pGeometries = &geometry;
+
+  VkAccelerationStructureBuildSizesInfoKHR sizes{
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR};
+  ctx.rt().get_build_sizes(ctx.device(), VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &info,
+                           &primitive_count, &sizes);
+
+  AccelerationStructure as;
+  as.ctx_ = &ctx;
+  as.storage_ = GpuBuffer(ctx, sizes.accelerationStructureSize,
+                          VK_BUFFER_USAGE_ACCELERATION_STRUCTURE_STORAGE_BIT_KHR);
+  VkAccelerationStructureCreateInfoKHR create{
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_CREATE_INFO_KHR};
+  create.buffer = as.storage_.handle();
+  create.size = sizes.accelerationStructureSize;
+  create.type = type;
+  vk_check(ctx.rt().create_acceleration_structure(ctx.device(), &create, nullptr, &as.handle_),
+           "vkCreateAccelerationStructureKHR");
+
+  const VkDeviceSize scratch_alignment =
+      ctx.acceleration_properties().minAccelerationStructureScratchOffsetAlignment;
+  GpuBuffer scratch(ctx, sizes.buildScratchSize + scratch_alignment,
+                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+  info.dstAccelerationStructure = as.handle_;
+  info.scratchData.deviceAddress = align_up(scratch.address(), scratch_alignment);
+
+  VkAccelerationStructureBuildRangeInfoKHR range{};
+  range.primitiveCount = primitive_count;
+  const VkAccelerationStructureBuildRangeInfoKHR* ranges = &range;
+  ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+    ctx.rt().cmd_build_acceleration_structures(cmd, 1, &info, &ranges);
+  });
+
+  VkAccelerationStructureDeviceAddressInfoKHR address{
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_DEVICE_ADDRESS_INFO_KHR};
+  address.accelerationStructure = as.handle_;
+  as.address_ = ctx.rt().get_acceleration_structure_address(ctx.device(), &address);
+  return as;
+}
+
+AccelerationStructure::~AccelerationStructure() { release(); }
+
+AccelerationStructure::AccelerationStructure(AccelerationStructure&& other) noexcept {
+  *this = std::move(other);
+}
+
+AccelerationStructure& AccelerationStructure::operator=(AccelerationStructure&& other) noexcept {
+  if (this != &other) {
+    release();
+    ctx_ = std::exchange(other.ctx_, nullptr);
+    handle_ = std::exchange(other.handle_, VK_NULL_HANDLE);
+    address_ = std::exchange(other.address_, 0);
+    storage_ = std::move(other.storage_);
+  }
+  return *this;
+}
+
+void AccelerationStructure::release() {
+  if (ctx_ && handle_)
+    ctx_->rt().destroy_acceleration_structure(ctx_->device(), handle_, nullptr);
+  handle_ = VK_NULL_HANDLE;
+  ctx_ = nullptr;
+}
+
+SceneAccelerationStructures SceneAccelerationStructures::build(VulkanContext& ctx,
+                                                               const PackedScene& scene) {
+  SceneAccelerationStructures out;
+  std::vector<VkAccelerationStructureInstanceKHR> instances;
+
+  if (scene.triangle_count() > 0) {
+    out.positions = GpuBuffer::from_vector(ctx, scene.positions, kBuildInput);
+    out.indices = GpuBuffer::from_vector(ctx, scene.indices, kBuildInput);
+    VkAccelerationStructureGeometryKHR geometry{
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
+    geometry.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
+    geometry.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;
+    auto& tri = geometry.geometry.triangles;
+    tri.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
+    tri.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;
+    tri.vertexData.deviceAddress = out.positions.address();
+    tri.vertexStride = sizeof(float) * 4;
+    tri.maxVertex = static_cast<uint32_t>(scene.positions.size() - 1);
+    tri.indexType = VK_INDEX_TYPE_UINT32;
+    tri.indexData.deviceAddress = out.indices.address();
+    out.triangles = AccelerationStructure::build(
+        ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, geometry, scene.triangle_count());
+    instances.push_back(instance_of(out.triangles, 0));
+  }
+
+  if (!scene.spheres.empty()) {
+    out.sphere_bounds = GpuBuffer::from_vector(ctx, scene.sphere_bounds, kBuildInput);
+    VkAccelerationStructureGeometryKHR geometry{
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
+    geometry.geometryType = VK_GEOMETRY_TYPE_AABBS_KHR;
+    geometry.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;
+    auto& aabbs = geometry.geometry.aabbs;
+    aabbs.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_AABBS_DATA_KHR;
+    aabbs.data.deviceAddress = out.sphere_bounds.address();
+    aabbs.stride = sizeof(GpuAabb);
+    out.spheres = AccelerationStructure::build(
+        ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, geometry,
+        static_cast<uint32_t>(scene.spheres.size()));
+    instances.push_back(instance_of(out.spheres, 1));
+  }
+
+  out.instances = GpuBuffer::from_vector(ctx, instances, kBuildInput);
+  VkAccelerationStructureGeometryKHR geometry{VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
+  geometry.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
+  geometry.geometry.instances.sType =
+      VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
+  geometry.geometry.instances.data.deviceAddress = out.instances.address();
+  out.top = AccelerationStructure::build(ctx, VK_ACCELERATION_STRUCTURE_TYPE_TOP_LEVEL_KHR,
+                                         geometry, static_cast<uint32_t>(instances.size()));
+  return out;
+}
+
+}  // namespace geodesic

@@ -1,0 +1,29 @@
+// The per-render uniform block (std140), mirrored by `Frame` in shaders/common/scene_data.glsl.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+namespace geodesic {
+
+struct FrameUniforms {
+  std::array<float, 16> camera_pose;  // column-major camera -> world isometry
+  std::array<float, 4> ambient_light;
+  float tan_half_fov_y;
+  float aspect;
+  uint32_t width;
+  uint32_t height;
+  uint32_t max_depth;
+  uint32_t light_count;
+  uint32_t seed;
+  uint32_t padding;
+};
+static_assert(sizeof(FrameUniforms) == 112, "must match the std140 layout of Frame");
+
+// Which samples one dispatch adds (push constants).
+struct SampleRange {
+  uint32_t start;
+  uint32_t count;
+};
+
+}  // namespace geodesic

@@ -1,0 +1,18 @@
+// Writes images through OpenImageIO: EXR keeps linear floats; PNG and JPEG get sRGB 8-bit.
+#pragma once
+
+#include <filesystem>
+
+#include "render/image.h"
+
+namespace geodesic {
+
+// The format follows the extension (.exr, .png, .jpg/.jpeg); throws std::runtime_error naming
+// the path and the reason on failure.
+void write_image(const std::filesystem::path& path, const Image& image);
+
+// Reads any image OpenImageIO understands as linear RGB floats (8-bit files are decoded from
+// sRGB). Used by tests and tools.
+Image read_image(const std::filesystem::path& path);
+
+}  // namespace geodesic

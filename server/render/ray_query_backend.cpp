@@ -1,0 +1,50 @@
+// Back end 1: the integrator as a compute shader tracing with ray queries.
+#include "render/shader_module.h"
+#include "render/trace_backend.h"
+
+namespace geodesic {
+namespace {
+
+constexpr uint32_t kGroupSize = 8;  // local_size of shaders/entry/ray_query.comp
+
+class RayQueryBackend : public TraceBackend {
+ public:
+  RayQueryBackend(VulkanContext& ctx, SceneResources& res) : ctx_(ctx), res_(res) {
+    ShaderModule module(ctx.device(), "ray_query.comp");
+    VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+    info.stage.module = module.handle();
+    info.stage.pName = "main";
+    info.layout = res.pipeline_layout();
+    vk_check(vkCreateComputePipelines(ctx.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_),
+             "vkCreateComputePipelines");
+  }
+
+  ~RayQueryBackend() override { vkDestroyPipeline(ctx_.device(), pipeline_, nullptr); }
+
+  const char* name() const override { return "ray-query"; }
+
+  void record(VkCommandBuffer cmd, SampleRange range) override {
+    VkDescriptorSet set = res_.descriptor_set();
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, res_.pipeline_layout(), 0, 1,
+                            &set, 0, nullptr);
+    vkCmdPushConstants(cmd, res_.pipeline_layout(), SceneResources::kShaderStages, 0, sizeof(range), &range);
+    vkCmdDispatch(cmd, (res_.width() + kGroupSize - 1) / kGroupSize,
+                  (res_.height() + kGroupSize - 1) / kGroupSize, 1);
+  }
+
+ private:
+  VulkanContext& ctx_;
+  SceneResources& res_;
+  VkPipeline pipeline_ = VK_NULL_HANDLE;
+};
+
+}  // namespace
+
+std::unique_ptr<TraceBackend> make_ray_query_backend(VulkanContext& ctx, SceneResources& res) {
+  return std::make_unique<RayQueryBackend>(ctx, res);
+}
+
+}  // namespace geodesic

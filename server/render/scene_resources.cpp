@@ -1,0 +1,134 @@
+#include "render/scene_resources.h"
+
+#include <cmath>
+#include <cstring>
+#include <numbers>
+
+namespace geodesic {
+namespace {
+
+constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+
+// Binding numbers of shaders/common/scene_data.glsl.
+enum Binding : uint32_t {
+  kScene = 0, kAccumulation, kFrame, kSpheres, kMaterials, kLights, kPositions, kNormals,
+  kIndices, kTriangles, kBindingCount
+};
+
+FrameUniforms make_uniforms(const Scene& scene) {
+  FrameUniforms u{};
+  u.camera_pose = scene.camera.pose.to_glsl();
+  const Vec3& a = scene.render.ambient_light;
+  u.ambient_light = {float(a.x), float(a.y), float(a.z), 0.0f};
+  u.tan_half_fov_y =
+      static_cast<float>(std::tan(scene.camera.fov_y_degrees * std::numbers::pi / 360.0));
+  u.width = static_cast<uint32_t>(scene.render.width);
+  u.height = static_cast<uint32_t>(scene.render.height);
+  u.aspect = float(u.width) / float(u.height);
+  u.max_depth = static_cast<uint32_t>(scene.render.max_depth);
+  u.light_count = static_cast<uint32_t>(scene.lights.size());
+  u.seed = static_cast<uint32_t>(scene.render.seed ^ (scene.render.seed >> 32));
+  return u;
+}
+
+}  // namespace
+
+SceneResources::SceneResources(VulkanContext& ctx, const Scene& scene)
+    : ctx_(ctx), uniforms_(make_uniforms(scene)), packed_(pack_scene(scene)) {
+  structures_ = SceneAccelerationStructures::build(ctx, packed_);
+  frame_ = GpuBuffer(ctx, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+  std::memcpy(frame_.mapped(), &uniforms_, sizeof(uniforms_));
+  accumulation_ = GpuBuffer(ctx, VkDeviceSize(width()) * height() * 4 * sizeof(float),
+                            kStorage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  clear_accumulation();
+  spheres_ = GpuBuffer::from_vector(ctx, packed_.spheres, kStorage);
+  materials_ = GpuBuffer::from_vector(ctx, packed_.materials, kStorage);
+  lights_ = GpuBuffer::from_vector(ctx, packed_.lights, kStorage);
+  positions_ = GpuBuffer::from_vector(ctx, packed_.positions, kStorage);
+  normals_ = GpuBuffer::from_vector(ctx, packed_.normals, kStorage);
+  indices_ = GpuBuffer::from_vector(ctx, packed_.indices, kStorage);
+  triangles_ = GpuBuffer::from_vector(ctx, packed_.triangles, kStorage);
+  create_descriptors();
+}
+
+SceneResources::~SceneResources() {
+  VkDevice device = ctx_.device();
+  vkDeviceWaitIdle(device);
+  vkDestroyPipelineLayout(device, pipeline_layout_, nullptr);
+  vkDestroyDescriptorPool(device, pool_, nullptr);
+  vkDestroyDescriptorSetLayout(device, set_layout_, nullptr);
+}
+
+void SceneResources::clear_accumulation() {
+  std::memset(accumulation_.mapped(), 0, accumulation_.size());
+}
+
+void SceneResources::create_descriptors() {
+  VkDevice device = ctx_.device();
+  VkDescriptorSetLayoutBinding bindings[kBindingCount]{};
+  for (uint32_t i = 0; i < kBindingCount; ++i) {
+    bindings[i].binding = i;
+    bindings[i].descriptorCount = 1;
+    bindings[i].stageFlags = SceneResources::kShaderStages;
+    bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+  }
+  bindings[kScene].descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+  bindings[kFrame].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+  VkDescriptorSetLayoutCreateInfo layout{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+  layout.bindingCount = kBindingCount;
+  layout.pBindings = bindings;
+  vk_check(vkCreateDescriptorSetLayout(device, &layout, nullptr, &set_layout_),
+           "vkCreateDescriptorSetLayout");
+
+  VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1},
+                                  {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
+                                  {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kBindingCount - 2}};
+  VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  pool.maxSets = 1;
+  pool.poolSizeCount = 3;
+  pool.pPoolSizes = sizes;
+  vk_check(vkCreateDescriptorPool(device, &pool, nullptr, &pool_), "vkCreateDescriptorPool");
+  VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  alloc.descriptorPool = pool_;
+  alloc.descriptorSetCount = 1;
+  alloc.pSetLayouts = &set_layout_;
+  vk_check(vkAllocateDescriptorSets(device, &alloc, &set_), "vkAllocateDescriptorSets");
+
+  VkPushConstantRange push{SceneResources::kShaderStages, 0, sizeof(SampleRange)};
+  VkPipelineLayoutCreateInfo pipeline{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+  pipeline.setLayoutCount = 1;
+  pipeline.pSetLayouts = &set_layout_;
+  pipeline.pushConstantRangeCount = 1;
+  pipeline.pPushConstantRanges = &push;
+  vk_check(vkCreatePipelineLayout(device, &pipeline, nullptr, &pipeline_layout_),
+           "vkCreatePipelineLayout");
+
+  // Write every binding.
+  VkAccelerationStructureKHR tlas = structures_.top.handle();
+  VkWriteDescriptorSetAccelerationStructureKHR as_write{
+      VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
+  as_write.accelerationStructureCount = 1;
+  as_write.pAccelerationStructures = &tlas;
+  const GpuBuffer* buffers[kBindingCount] = {nullptr,     &accumulation_, &frame_,
+                                             &spheres_,   &materials_,    &lights_,
+                                             &positions_, &normals_,      &indices_,
+                                             &triangles_};
+  VkDescriptorBufferInfo infos[kBindingCount]{};
+  VkWriteDescriptorSet writes[kBindingCount]{};
+  for (uint32_t i = 0; i < kBindingCount; ++i) {
+    writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+    writes[i].dstSet = set_;
+    writes[i].dstBinding = i;
+    writes[i].descriptorCount = 1;
+    writes[i].descriptorType = bindings[i].descriptorType;
+    if (i == kScene) {
+      writes[i].pNext = &as_write;
+    } else {
+      infos[i] = {buffers[i]->handle(), 0, VK_WHOLE_SIZE};
+      writes[i].pBufferInfo = &infos[i];
+    }
+  }
+  vkUpdateDescriptorSets(device, kBindingCount, writes, 0, nullptr);
+}
+
+}  // namespace geodesic

@@ -1,0 +1,52 @@
+// Everything a scene needs on the device: its buffers, acceleration structures, the
+// accumulation buffer, and the one descriptor set both tracing back ends bind.
+#pragma once
+
+#include "render/acceleration.h"
+#include "render/frame_uniforms.h"
+#include "render/gpu_buffer.h"
+#include "render/packed_scene.h"
+#include "scene/scene.h"
+
+namespace geodesic {
+
+class SceneResources {
+ public:
+  // Every stage that reads the scene's descriptor set and push constants.
+  static constexpr VkShaderStageFlags kShaderStages =
+      VK_SHADER_STAGE_COMPUTE_BIT | VK_SHADER_STAGE_RAYGEN_BIT_KHR |
+      VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR | VK_SHADER_STAGE_INTERSECTION_BIT_KHR |
+      VK_SHADER_STAGE_MISS_BIT_KHR;
+
+  SceneResources(VulkanContext& ctx, const Scene& scene);
+  ~SceneResources();
+  SceneResources(const SceneResources&) = delete;
+  SceneResources& operator=(const SceneResources&) = delete;
+
+  VkDescriptorSetLayout set_layout() const { return set_layout_; }
+  VkDescriptorSet descriptor_set() const { return set_; }
+  VkPipelineLayout pipeline_layout() const { return pipeline_layout_; }
+  const FrameUniforms& uniforms() const { return uniforms_; }
+  uint32_t width() const { return uniforms_.width; }
+  uint32_t height() const { return uniforms_.height; }
+
+  // Running per-pixel sums: rgb = radiance sum, a = sample count.
+  const float* accumulation() const { return static_cast<const float*>(accumulation_.mapped()); }
+  void clear_accumulation();
+
+ private:
+  void create_descriptors();
+
+  VulkanContext& ctx_;
+  FrameUniforms uniforms_{};
+  PackedScene packed_;
+  SceneAccelerationStructures structures_;
+  GpuBuffer frame_, accumulation_, spheres_, materials_, lights_, positions_, normals_,
+      indices_, triangles_;
+  VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
+  VkDescriptorPool pool_ = VK_NULL_HANDLE;
+  VkDescriptorSet set_ = VK_NULL_HANDLE;
+  VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
+};
+
+}  // namespace geodesic

@@ -1,0 +1,101 @@
+// The headless Vulkan device: instance, the chosen ray-tracing capable physical device, one
+// compute queue, and the extension entry points the loader does not export.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+namespace geodesic {
+
+class VulkanError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Throws VulkanError naming the call when a Vulkan function fails.
+void vk_check(VkResult result, const char* what);
+
+// What `geodesic devices` prints and device selection decides on.
+struct DeviceDescription {
+  uint32_t index = 0;
+  std::string name;
+  std::string type;  // "cpu", "discrete-gpu", ...
+  std::string driver;
+  bool cpu = false;
+  bool acceleration_structure = false;
+  bool ray_tracing_pipeline = false;
+  bool ray_query = false;
+  std::vector<std::string> missing;  // required extensions/features it lacks
+
+  bool can_ray_trace() const { return missing.empty() && (ray_tracing_pipeline || ray_query); }
+};
+
+// Extension entry points fetched with vkGetDeviceProcAddr.
+struct RayTracingFunctions {
+  PFN_vkGetAccelerationStructureBuildSizesKHR get_build_sizes = nullptr;
+  PFN_vkCreateAccelerationStructureKHR create_acceleration_structure = nullptr;
+  PFN_vkDestroyAccelerationStructureKHR destroy_acceleration_structure = nullptr;
+  PFN_vkCmdBuildAccelerationStructuresKHR cmd_build_acceleration_structures = nullptr;
+  PFN_vkGetAccelerationStructureDeviceAddressKHR get_acceleration_structure_address = nullptr;
+  PFN_vkCreateRayTracingPipelinesKHR create_ray_tracing_pipelines = nullptr;
+  PFN_vkGetRayTracingShaderGroupHandlesKHR get_shader_group_handles = nullptr;
+  PFN_vkCmdTraceRaysKHR cmd_trace_rays = nullptr;
+};
+
+class VulkanContext {
+ public:
+  // selector: empty (prefer a GPU that can ray-trace, else lavapipe), a device index, or a
+  // case-insensitive substring of the device name (e.g. "llvmpipe", "lavapipe", "nvidia").
+  explicit VulkanContext(const std::string& selector = "");
+  ~VulkanContext();
+  VulkanContext(const VulkanContext&) = delete;
+  VulkanContext& operator=(const VulkanContext&) = delete;
+
+  static std::vector<DeviceDescription> list_devices();
+
+  VkDevice device() const { return device_; }
+  VkPhysicalDevice physical_device() const { return physical_device_; }
+  VkQueue queue() const { return queue_; }
+  const DeviceDescription& description() const { return description_; }
+  const RayTracingFunctions& rt() const { return rt_; }
+  const VkPhysicalDeviceRayTracingPipelinePropertiesKHR& pipeline_properties() const {
+    return pipeline_properties_;
+  }
+  const VkPhysicalDeviceAccelerationStructurePropertiesKHR& acceleration_properties() const {
+    return acceleration_properties_;
+  }
+
+  uint32_t find_memory_type(uint32_t type_bits, VkMemoryPropertyFlags wanted) const;
+
+  // Records commands into a fresh command buffer, submits and waits for completion.
+  template <typename Record>
+  void submit_and_wait(Record&& record) {
+    VkCommandBuffer cmd = begin_one_shot();
+    record(cmd);
+    end_one_shot(cmd);
+  }
+
+ private:
+  VkCommandBuffer begin_one_shot();
+  void end_one_shot(VkCommandBuffer cmd);
+
+  VkInstance instance_ = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_device_ = VK_NULL_HANDLE;
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkQueue queue_ = VK_NULL_HANDLE;
+  uint32_t queue_family_ = 0;
+  VkCommandPool command_pool_ = VK_NULL_HANDLE;
+  VkFence fence_ = VK_NULL_HANDLE;
+  DeviceDescription description_;
+  RayTracingFunctions rt_;
+  VkPhysicalDeviceMemoryProperties memory_properties_{};
+  VkPhysicalDeviceRayTracingPipelinePropertiesKHR pipeline_properties_{};
+  VkPhysicalDeviceAccelerationStructurePropertiesKHR acceleration_properties_{};
+};
+
+}  // namespace geodesic

@@ -1,0 +1,82 @@
+// The in-memory scene: what the loader produces and the renderer consumes. Everything is
+// already resolved (materials by index, polygons and meshes as world-space triangles).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "geometry/vec.h"
+
+namespace geodesic {
+
+enum class GeometryKind { Euclidean };
+
+// The paper's material coefficients (eq. 2.2) plus a perfect mirror and emission, RGB.
+struct Material {
+  std::string name;
+  Vec3 ambient;          // k_a
+  Vec3 diffuse;          // k_d, also the albedo of the Lambertian indirect bounce
+  Vec3 specular;         // k_s
+  double shininess = 1;  // k_e, the Phong roughness exponent
+  Vec3 mirror;           // reflectance of a perfect mirror lobe
+  Vec3 emission;         // emitted radiance L_e
+};
+
+struct Sphere {
+  Vec3 center;
+  double radius = 1;
+  uint32_t material = 0;
+};
+
+// World-space triangles sharing one material. normals is empty (flat shading) or one per
+// position (smooth shading, as exported by Blender).
+struct TriangleMesh {
+  std::vector<Vec3> positions;
+  std::vector<Vec3> normals;
+  std::vector<uint32_t> indices;  // three per triangle
+  uint32_t material = 0;
+};
+
+struct PointLight {
+  Vec3 position;
+  Vec3 intensity;  // RGB
+};
+
+struct Camera {
+  // Isometry taking the camera frame to the world: columns are right, up, back (the camera
+  // looks along -z of its frame) and the position (w = 1).
+  Mat4 pose = Mat4::identity();
+  double fov_y_degrees = 45;
+};
+
+struct RenderSettings {
+  int width = 512;
+  int height = 512;
+  int max_depth = 5;  // indirect bounces (the paper's d)
+  int spp = 64;
+  uint64_t seed = 1;
+  Vec3 ambient_light;  // L_a of eq. 2.2
+};
+
+struct Scene {
+  std::string name;
+  GeometryKind geometry = GeometryKind::Euclidean;
+  Camera camera;
+  std::vector<Material> materials;
+  std::vector<Sphere> spheres;
+  std::vector<TriangleMesh> meshes;
+  std::vector<PointLight> lights;
+  RenderSettings render;
+};
+
+// A validation or parse failure; what() reads "<json path>: <reason>", e.g.
+// "objects[3].radius: must be > 0".
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace geodesic

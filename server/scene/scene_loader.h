@@ -1,0 +1,19 @@
+// Reads a scene document (JSON, see proto/scene.schema.json) into a Scene.
+#pragma once
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "scene/scene.h"
+
+namespace geodesic {
+
+// base_dir resolves relative mesh file names. Throws SceneError naming the field and reason.
+// Takes ordered_json because material indices follow document order; a plain
+// nlohmann::json converts implicitly but has already sorted its keys.
+Scene parse_scene(const nlohmann::ordered_json& doc, const std::filesystem::path& base_dir);
+// Also throws SceneError for an unreadable file or invalid JSON (with the parse position).
+Scene load_scene_file(const std::filesystem::path& path);
+
+}  // namespace geodesic

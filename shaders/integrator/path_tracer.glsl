@@ -1,0 +1,48 @@
+// The paper's algorithms 2 and 3: a camera ray per sample, then at each hit emission, the
+// ambient term and direct light (eq. 2.2), and one Monte Carlo bounce, up to depth d.
+// The entry point defines traceSurface() and traceOccluded() before including this file.
+#ifndef PATH_TRACER_GLSL
+#define PATH_TRACER_GLSL
+
+vec3 pathRadiance(Ray ray, inout uint rng) {
+  vec3 radiance = vec3(0.0);
+  vec3 throughput = vec3(1.0);
+  for (uint depth = 0u; depth <= frame.maxDepth; ++depth) {
+    Surface s = traceSurface(ray);
+    if (s.hit == 0u) break;  // nothing to see: the background is black
+    Material m = materials[s.material];
+    vec3 wo = -ray.direction;
+    radiance += throughput * (m.emission.rgb + m.ambient.rgb * frame.ambientLight.rgb +
+                              directIllumination(s, wo, m));
+    if (depth == frame.maxDepth) break;
+    vec3 direction, weight;
+    if (!sampleBounce(s, ray.direction, m, rng, direction, weight)) break;
+    throughput *= weight;
+    ray = Ray(offsetFromSurface(s.position, s.geometricNormal), direction);
+  }
+  return radiance;
+}
+
+// One sample of pixel `pixel`: a jittered camera ray through the pinhole.
+vec3 pixelSample(uvec2 pixel, inout uint rng) {
+  vec2 jitter = vec2(rngNext(rng), rngNext(rng));
+  vec2 ndc = 2.0 * (vec2(pixel) + jitter) / vec2(frame.width, frame.height) - 1.0;
+  vec3 dir = vec3(ndc.x * frame.tanHalfFovY * frame.aspect, -ndc.y * frame.tanHalfFovY, -1.0);
+  return pathRadiance(cameraRay(frame.cameraPose, dir), rng);
+}
+
+// Adds push.sampleCount samples to the pixel's running sum (rgb) and count (a).
+void accumulatePixel(uvec2 pixel) {
+  if (pixel.x >= frame.width || pixel.y >= frame.height) return;
+  uint index = pixel.y * frame.width + pixel.x;
+  vec3 sum = vec3(0.0);
+  for (uint i = 0u; i < push.sampleCount; ++i) {
+    uint rng = rngSeed(index, push.sampleStart + i, frame.seed);
+    vec3 value = pixelSample(pixel, rng);
+    // A NaN/Inf sample would poison the pixel forever: drop its value (never seen in tests).
+    if (!any(isnan(value)) && !any(isinf(value))) sum += value;
+  }
+  accumulation[index] += vec4(sum, float(push.sampleCount));
+}
+
+#endif

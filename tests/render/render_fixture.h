@@ -1,0 +1,65 @@
+// Shared set-up for render tests: one Vulkan device per test binary, scenes from JSON text,
+// and image statistics to assert on.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+
+namespace geodesic::test {
+
+inline VulkanContext& device() {
+  static VulkanContext ctx;  // default selection: lavapipe on CI machines
+  return ctx;
+}
+
+inline std::filesystem::path source_path(const std::string& relative) {
+  return std::filesystem::path(GEODESIC_SOURCE_DIR) / relative;
+}
+
+inline Scene scene_from_json(const std::string& text) {
+  return parse_scene(nlohmann::ordered_json::parse(text), source_path("scenes"));
+}
+
+inline Image render(const Scene& scene, uint32_t spp, BackendKind backend = BackendKind::Auto) {
+  Renderer renderer(device(), scene, backend);
+  renderer.add_samples(spp);
+  return renderer.image();
+}
+
+struct Rgb {
+  double r = 0, g = 0, b = 0;
+};
+
+// Mean colour over the pixel rectangle [x0, x1) x [y0, y1).
+inline Rgb mean(const Image& image, int x0, int y0, int x1, int y1) {
+  Rgb m;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      m.r += image.at(x, y, 0);
+      m.g += image.at(x, y, 1);
+      m.b += image.at(x, y, 2);
+    }
+  const double n = double(x1 - x0) * (y1 - y0);
+  return {m.r / n, m.g / n, m.b / n};
+}
+
+inline Rgb mean(const Image& image) { return mean(image, 0, 0, image.width, image.height); }
+
+// Root-mean-square difference between two images of the same size.
+inline double rms_difference(const Image& a, const Image& b) {
+  double sum = 0;
+  for (size_t i = 0; i < a.rgb.size(); ++i) {
+    const double d = double(a.rgb[i]) - b.rgb[i];
+    sum += d * d;
+  }
+  return std::sqrt(sum / a.rgb.size());
+}
+
+}  // namespace geodesic::test
