@@ -1,0 +1,375 @@
+// Scene document → Scene: validates every field, then resolves material names, primitives
+// and mesh files into the renderer's flat arrays. The format: docs/scene-format.md.
+#include "scene/scene_loader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "scene/json_path.h"
+#include "scene/mesh_loader.h"
+
+namespace geodesic {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+// Sines, relative distances and relative areas below this count as zero: far above double
+// rounding of decimal input, far below anything a scene author means on purpose.
+constexpr double kDegenerate = 1e-6;
+
+Vec3 rotate(const Mat4& r, const Vec3& v) { return (r * Vec4(v, 0)).xyz(); }
+
+Mat4 frame(const Vec3& x, const Vec3& y, const Vec3& z, const Vec3& origin) {
+  Mat4 m = Mat4::identity();
+  const Vec3 columns[4] = {x, y, z, origin};
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 3; ++r) m.m[r][c] = columns[c][r];
+  return m;
+}
+
+// R = Ry(yaw) · Rx(pitch) · Rroll, angles in degrees. Yaw turns about +y (positive turns
+// -z towards -x), pitch about +x (positive raises -z towards +y), roll about the view axis
+// -z (positive lowers +x towards -y).
+Mat4 rotation_matrix(double yaw, double pitch, double roll) {
+  const double k = std::numbers::pi / 180;
+  const double cy = std::cos(yaw * k), sy = std::sin(yaw * k);
+  const double cp = std::cos(pitch * k), sp = std::sin(pitch * k);
+  const double cr = std::cos(roll * k), sr = std::sin(roll * k);
+  const Mat4 ry = frame({cy, 0, -sy}, {0, 1, 0}, {sy, 0, cy}, {});
+  const Mat4 rx = frame({1, 0, 0}, {0, cp, sp}, {0, -sp, cp}, {});
+  const Mat4 rroll = frame({cr, -sr, 0}, {sr, cr, 0}, {0, 0, 1}, {});
+  return ry * rx * rroll;
+}
+
+Mat4 read_rotation(const JsonNode& node) {
+  node.expect_object({"yaw", "pitch", "roll"});
+  auto angle = [&](const char* key) {
+    const auto child = node.find(key);
+    return child ? read_number(*child) : 0.0;
+  };
+  return rotation_matrix(angle("yaw"), angle("pitch"), angle("roll"));
+}
+
+Camera read_camera(const JsonNode& node) {
+  node.expect_object({"position", "look_at", "up", "rotation", "fov_y"});
+  const Vec3 position = read_vec3(node.at("position"));
+  const auto look_at = node.find("look_at");
+  const auto up = node.find("up");
+  const auto rotation = node.find("rotation");
+  if (look_at && rotation) node.fail("give either \"look_at\" or \"rotation\", not both");
+  if (up && !look_at) up->fail("only allowed together with \"look_at\"");
+
+  Camera camera;
+  if (look_at) {
+    const Vec3 view = read_vec3(*look_at) - position;
+    if (length(view) <= kDegenerate * std::max(1.0, length(position)))
+      look_at->fail("must differ from camera.position");
+    const Vec3 up_hint = up ? read_vec3(*up) : Vec3(0, 1, 0);
+    if (length(up_hint) == 0) up->fail("must be non-zero");
+    const Vec3 forward = normalize(view);
+    const Vec3 side = cross(forward, normalize(up_hint));
+    if (length(side) <= kDegenerate)
+      node.fail_field("up", "must not be parallel to the view direction");
+    const Vec3 right = normalize(side);
+    camera.pose = frame(right, cross(right, forward), -forward, position);
+  } else {
+    camera.pose = rotation ? read_rotation(*rotation) : Mat4::identity();
+    for (int r = 0; r < 3; ++r) camera.pose.m[r][3] = position[r];
+  }
+  if (const auto fov = node.find("fov_y")) {
+    camera.fov_y_degrees = read_number(*fov);
+    if (camera.fov_y_degrees <= 0 || camera.fov_y_degrees >= 180) fov->fail("must be in (0, 180)");
+  }
+  return camera;
+}
+
+std::vector<Material> read_materials(const JsonNode& node) {
+  if (!node.value().is_object()) node.fail("must be an object mapping names to materials");
+  std::vector<Material> materials;
+  for (const auto& item : node.value().items()) {
+    const JsonNode m = node.at(item.key());
+    m.expect_object({"ambient", "diffuse", "specular", "shininess", "mirror", "emission"});
+    auto rgb = [&](const char* key) {
+      const auto child = m.find(key);
+      return child ? read_rgb(*child) : Vec3();
+    };
+    Material material{.name = item.key(),
+                      .ambient = rgb("ambient"),
+                      .diffuse = rgb("diffuse"),
+                      .specular = rgb("specular"),
+                      .mirror = rgb("mirror"),
+                      .emission = rgb("emission")};
+    if (const auto shininess = m.find("shininess"))
+      material.shininess = read_non_negative(*shininess);
+    // Diffuse and mirror lobes both reflect light; together they may not create energy.
+    for (int c = 0; c < 3; ++c)
+      if (material.diffuse[c] + material.mirror[c] > 1)
+        m.fail("diffuse[" + std::to_string(c) + "] + mirror[" + std::to_string(c) +
+               "] must be <= 1 (energy conservation)");
+    materials.push_back(material);
+  }
+  return materials;
+}
+
+// Two counter-clockwise triangles corner, corner+u, corner+u+v, corner+v: the front side
+// faces cross(u, v).
+void append_quad(TriangleMesh& mesh, const Vec3& corner, const Vec3& u, const Vec3& v) {
+  const auto base = static_cast<uint32_t>(mesh.positions.size());
+  mesh.positions.insert(mesh.positions.end(), {corner, corner + u, corner + u + v, corner + v});
+  mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+}
+
+TriangleMesh read_quad(const JsonNode& node) {
+  const Vec3 corner = read_vec3(node.at("corner"));
+  const Vec3 u = read_vec3(node.at("edge_u"));
+  const Vec3 v = read_vec3(node.at("edge_v"));
+  if (length(cross(u, v)) <= kDegenerate * length(u) * length(v))
+    node.fail("degenerate quad: edge_u and edge_v must be non-zero and not parallel");
+  TriangleMesh mesh;
+  append_quad(mesh, corner, u, v);
+  return mesh;
+}
+
+// A planar, strictly convex polygon as a triangle fan; the vertex order sets the front side.
+TriangleMesh read_polygon(const JsonNode& node) {
+  const JsonNode list = node.at("vertices");
+  const std::size_t n = list.expect_array(3, "an array of at least 3 points");
+  std::vector<Vec3> vertices;
+  for (std::size_t i = 0; i < n; ++i) vertices.push_back(read_vec3(list[i]));
+
+  // Newell's normal (twice the area vector), taken about vertex 0 to avoid cancellation far
+  // from the origin: exact for planar polygons, a best fit otherwise.
+  Vec3 centroid, newell;
+  double size = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    centroid += vertices[i] / static_cast<double>(n);
+    newell += cross(vertices[i] - vertices[0], vertices[(i + 1) % n] - vertices[0]);
+    size = std::max(size, length(vertices[i] - vertices[0]));
+  }
+  if (length(newell) <= kDegenerate * size * size) list.fail("degenerate polygon: it has no area");
+  const Vec3 normal = normalize(newell);
+  for (const Vec3& vertex : vertices)
+    if (std::abs(dot(vertex - centroid, normal)) > kDegenerate * size)
+      list.fail("polygon is not planar");
+  // Strictly convex iff every vertex lies strictly left of every edge it is not on.
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 a = vertices[i], b = vertices[(i + 1) % n];
+    for (std::size_t j = 0; j < n; ++j)
+      if (j != i && j != (i + 1) % n &&
+          dot(cross(b - a, vertices[j] - a), normal) <= kDegenerate * size * size)
+        list.fail("polygon must be strictly convex (no reflex, repeated or collinear vertices)");
+  }
+  TriangleMesh mesh;
+  mesh.positions = vertices;
+  for (uint32_t i = 1; i + 1 < n; ++i) mesh.indices.insert(mesh.indices.end(), {0, i, i + 1});
+  return mesh;
+}
+
+// An axis-aligned box, optionally rotated about its centre: two triangles per listed face,
+// front sides facing outwards.
+TriangleMesh read_box(const JsonNode& node) {
+  const Vec3 lo = read_vec3(node.at("min"));
+  const Vec3 hi = read_vec3(node.at("max"));
+  const JsonNode max_node = node.at("max");
+  for (std::size_t c = 0; c < 3; ++c)
+    if (hi[c] <= lo[c]) max_node[c].fail("must be greater than min[" + std::to_string(c) + "]");
+  const auto rotation_node = node.find("rotation");
+  const Mat4 rotation = rotation_node ? read_rotation(*rotation_node) : Mat4::identity();
+
+  const char* names[6] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+  bool wanted[6] = {true, true, true, true, true, true};
+  if (const auto faces = node.find("faces")) {
+    const std::size_t n = faces->expect_array(1, "a non-empty array of face names");
+    std::fill(std::begin(wanted), std::end(wanted), false);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::string name = read_string((*faces)[i]);
+      const auto it = std::find(std::begin(names), std::end(names), name);
+      if (it == std::end(names))
+        (*faces)[i].fail(R"(must be one of "+x", "-x", "+y", "-y", "+z", "-z")");
+      bool& face = wanted[it - std::begin(names)];
+      if (face) (*faces)[i].fail("face \"" + name + "\" is listed twice");
+      face = true;
+    }
+  }
+  const Vec3 d = hi - lo, centre = (lo + hi) / 2;
+  const Vec3 dx(d.x, 0, 0), dy(0, d.y, 0), dz(0, 0, d.z);
+  // Per face: a corner and edges u, v with cross(u, v) pointing out of the box.
+  const Vec3 sides[6][3] = {{{hi.x, lo.y, lo.z}, dy, dz}, {lo, dz, dy},
+                            {{lo.x, hi.y, lo.z}, dz, dx}, {lo, dx, dz},
+                            {{lo.x, lo.y, hi.z}, dx, dy}, {lo, dy, dx}};
+  TriangleMesh mesh;
+  for (int f = 0; f < 6; ++f)
+    if (wanted[f])
+      append_quad(mesh, centre + rotate(rotation, sides[f][0] - centre),
+                  rotate(rotation, sides[f][1]), rotate(rotation, sides[f][2]));
+  return mesh;
+}
+
+TriangleMesh read_mesh(const JsonNode& node, const fs::path& base_dir) {
+  const JsonNode file = node.at("file");
+  const fs::path path = base_dir / read_string(file);
+  std::error_code error;
+  if (!fs::is_regular_file(path, error)) file.fail("file not found: \"" + path.string() + "\"");
+
+  Vec3 scale(1, 1, 1);
+  if (const auto s = node.find("scale")) {
+    if (s->value().is_array()) {
+      if (s->value().size() != 3) s->fail("must be a number or an array of 3 numbers");
+      scale = {read_positive((*s)[0]), read_positive((*s)[1]), read_positive((*s)[2])};
+    } else {
+      const double uniform = read_positive(*s);
+      scale = {uniform, uniform, uniform};
+    }
+  }
+  const auto position = node.find("position");
+  const auto rotation = node.find("rotation");
+  const Vec3 translation = position ? read_vec3(*position) : Vec3();
+  const Mat4 turn = rotation ? read_rotation(*rotation) : Mat4::identity();
+
+  TriangleMesh mesh;
+  try {
+    mesh = load_mesh_file(path);
+  } catch (const std::exception& e) {
+    file.fail("cannot load \"" + path.string() + "\": " + e.what());
+  }
+  transform_mesh(mesh, scale, turn, translation);
+  return mesh;
+}
+
+struct MaterialTable {
+  std::map<std::string, uint32_t> index;
+
+  uint32_t lookup(const JsonNode& node) const {
+    const std::string name = read_string(node);
+    const auto it = index.find(name);
+    if (it == index.end()) node.fail("unknown material \"" + name + "\"");
+    return it->second;
+  }
+};
+
+void read_object(const JsonNode& node, const MaterialTable& materials, const fs::path& base_dir,
+                 Scene& scene) {
+  if (!node.value().is_object()) node.fail("must be an object");
+  const JsonNode type_node = node.at("type");
+  const std::string type = read_string(type_node);
+  if (type == "sphere")
+    node.expect_object({"type", "material", "center", "radius"});
+  else if (type == "quad")
+    node.expect_object({"type", "material", "corner", "edge_u", "edge_v"});
+  else if (type == "polygon")
+    node.expect_object({"type", "material", "vertices"});
+  else if (type == "box")
+    node.expect_object({"type", "material", "min", "max", "rotation", "faces"});
+  else if (type == "mesh")
+    node.expect_object({"type", "material", "file", "position", "scale", "rotation"});
+  else
+    type_node.fail("unknown object type \"" + type +
+                   "\" (expected \"sphere\", \"quad\", \"polygon\", \"box\" or \"mesh\")");
+  const uint32_t material = materials.lookup(node.at("material"));
+
+  if (type == "sphere") {
+    scene.spheres.push_back(
+        {read_vec3(node.at("center")), read_positive(node.at("radius")), material});
+    return;
+  }
+  TriangleMesh mesh = type == "quad"      ? read_quad(node)
+                      : type == "polygon" ? read_polygon(node)
+                      : type == "box"     ? read_box(node)
+                                          : read_mesh(node, base_dir);
+  mesh.material = material;
+  scene.meshes.push_back(std::move(mesh));
+}
+
+PointLight read_light(const JsonNode& node) {
+  if (!node.value().is_object()) node.fail("must be an object");
+  const JsonNode type = node.at("type");
+  const std::string name = read_string(type);
+  if (name != "point") type.fail("unknown light type \"" + name + "\" (expected \"point\")");
+  node.expect_object({"type", "position", "intensity"});
+  return {read_vec3(node.at("position")), read_rgb(node.at("intensity"))};
+}
+
+RenderSettings read_render(const JsonNode& node) {
+  node.expect_object({"width", "height", "max_depth", "spp", "seed", "ambient"});
+  RenderSettings render;
+  if (const auto n = node.find("width")) render.width = read_int(*n, 1, 8192);
+  if (const auto n = node.find("height")) render.height = read_int(*n, 1, 8192);
+  if (const auto n = node.find("max_depth")) render.max_depth = read_int(*n, 0, 64);
+  if (const auto n = node.find("spp")) render.spp = read_int(*n, 1, 1000000);
+  if (const auto n = node.find("seed")) render.seed = read_uint64(*n);
+  if (const auto n = node.find("ambient")) render.ambient_light = read_rgb(*n);
+  return render;
+}
+
+void check_geometry(const JsonNode& node) {
+  const std::string geometry = read_string(node);
+  if (geometry == "hyperbolic" || geometry == "spherical")
+    node.fail("\"" + geometry + "\" is not supported yet (only \"euclidean\")");
+  if (geometry != "euclidean")
+    node.fail("unknown geometry \"" + geometry + "\" (expected \"euclidean\")");
+}
+
+// Quotient manifolds come later; today only the trivial one is accepted.
+void check_manifold(const JsonNode& node) {
+  if (node.value().is_null()) return;
+  if (!node.value().is_object()) node.fail("must be null or an object");
+  node.expect_object({"type"});
+  const JsonNode type = node.at("type");
+  if (read_string(type) != "none")
+    type.fail("quotient manifolds are not supported yet (only \"none\")");
+}
+
+}  // namespace
+
+Scene parse_scene(const Json& doc, const fs::path& base_dir) {
+  const JsonNode root(doc, "");
+  root.expect_object(
+      {"name", "geometry", "manifold", "camera", "materials", "objects", "lights", "render"});
+  Scene scene;
+  if (const auto name = root.find("name")) scene.name = read_string(*name);
+  check_geometry(root.at("geometry"));
+  if (const auto manifold = root.find("manifold")) check_manifold(*manifold);
+  scene.camera = read_camera(root.at("camera"));
+
+  MaterialTable table;
+  if (const auto materials = root.find("materials")) scene.materials = read_materials(*materials);
+  for (uint32_t i = 0; i < scene.materials.size(); ++i) table.index[scene.materials[i].name] = i;
+
+  if (const auto objects = root.find("objects")) {
+    const std::size_t n = objects->expect_array(0, "an array of objects");
+    for (std::size_t i = 0; i < n; ++i) read_object((*objects)[i], table, base_dir, scene);
+  }
+  if (const auto lights = root.find("lights")) {
+    const std::size_t n = lights->expect_array(0, "an array of lights");
+    for (std::size_t i = 0; i < n; ++i) scene.lights.push_back(read_light((*lights)[i]));
+  }
+  if (const auto render = root.find("render")) scene.render = read_render(*render);
+  return scene;
+}
+
+Scene load_scene_file(const fs::path& path) {
+  std::error_code error;
+  std::ifstream in(path);
+  if (!fs::is_regular_file(path, error) || !in)
+    throw SceneError(path.string() + ": cannot open file (missing or not a regular file)");
+  Json doc;
+  try {
+    doc = Json::parse(in);
+  } catch (const Json::exception& e) {
+    // Syntax errors (with line and column) and number overflow (e.g. 1e400). Drop
+    // nlohmann's "[json.exception.parse_error.101] " tag.
+    const std::string what = e.what();
+    const auto tag_end = what.find("] ");
+    throw SceneError(path.string() + ": invalid JSON: " +
+                     (tag_end == std::string::npos ? what : what.substr(tag_end + 2)));
+  }
+  return parse_scene(doc, path.parent_path());
+}
+
+}  // namespace geodesic

@@ -1,0 +1,488 @@
+// The scene document: bundled scenes load with the intended content, primitives become the
+// right triangles, cameras the right poses, and every invalid document is rejected with a
+// message naming the field.
+#include "scene/scene_loader.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <numbers>
+#include <set>
+#include <string>
+#include <tuple>
+
+namespace geodesic {
+namespace {
+
+namespace fs = std::filesystem;
+using Json = nlohmann::ordered_json;
+
+const fs::path kSceneDir = fs::path(GEODESIC_SOURCE_DIR) / "scenes";
+
+// A valid document; each test case patches it (RFC 7386 merge patch: null deletes a key).
+constexpr const char* kBase = R"({
+  "geometry": "euclidean",
+  "camera": {"position": [0, 0, 5]},
+  "materials": {"red": {"diffuse": [0.8, 0.1, 0.1]}},
+  "objects": [{"type": "sphere", "material": "red", "center": [0, 0, 0], "radius": 1}]
+})";
+
+Json patched(const std::string& patch) {
+  Json doc = Json::parse(kBase);
+  doc.merge_patch(Json::parse(patch));
+  return doc;
+}
+
+Scene parse_patched(const std::string& patch) { return parse_scene(patched(patch), kSceneDir); }
+
+std::string error_of_document(const Json& doc) {
+  try {
+    parse_scene(doc, kSceneDir);
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+std::string error_of(const std::string& patch) { return error_of_document(patched(patch)); }
+
+// The single object of a document whose objects array is [object].
+Scene parse_object(const std::string& object) {
+  return parse_patched(R"({"objects": [)" + object + "]}");
+}
+
+Vec3 column(const Mat4& m, int c) { return {m.m[0][c], m.m[1][c], m.m[2][c]}; }
+
+void expect_near(const Vec3& a, const Vec3& b, double tolerance = 1e-12) {
+  EXPECT_NEAR(a.x, b.x, tolerance);
+  EXPECT_NEAR(a.y, b.y, tolerance);
+  EXPECT_NEAR(a.z, b.z, tolerance);
+}
+
+void expect_orthonormal_pose(const Mat4& pose) {
+  const Vec3 right = column(pose, 0), up = column(pose, 1), back = column(pose, 2);
+  EXPECT_NEAR(length(right), 1, 1e-12);
+  EXPECT_NEAR(length(up), 1, 1e-12);
+  EXPECT_NEAR(dot(right, up), 0, 1e-12);
+  expect_near(cross(right, up), back);  // right-handed
+  for (int c = 0; c < 4; ++c) EXPECT_EQ(pose.m[3][c], c == 3 ? 1.0 : 0.0);
+}
+
+Vec3 triangle_normal(const TriangleMesh& mesh, std::size_t t) {
+  const Vec3 a = mesh.positions[mesh.indices[3 * t]];
+  return normalize(cross(mesh.positions[mesh.indices[3 * t + 1]] - a,
+                         mesh.positions[mesh.indices[3 * t + 2]] - a));
+}
+
+Vec3 triangle_centroid(const TriangleMesh& mesh, std::size_t t) {
+  Vec3 sum;
+  for (int k = 0; k < 3; ++k) sum += mesh.positions[mesh.indices[3 * t + k]];
+  return sum / 3;
+}
+
+// Every triangle of every mesh faces towards `point` (true) or away from it (false).
+void expect_facing(const std::vector<TriangleMesh>& meshes, const Vec3& point, bool towards) {
+  for (const TriangleMesh& mesh : meshes)
+    for (std::size_t t = 0; t < mesh.indices.size() / 3; ++t) {
+      const double facing = dot(triangle_normal(mesh, t), point - triangle_centroid(mesh, t));
+      EXPECT_EQ(facing > 0, towards) << "triangle " << t;
+    }
+}
+
+std::vector<fs::path> bundled_scenes() {
+  std::vector<fs::path> scenes;
+  for (const auto& entry : fs::directory_iterator(kSceneDir))
+    if (entry.path().extension() == ".json") scenes.push_back(entry.path());
+  return scenes;
+}
+
+TEST(SceneLoader, EveryBundledSceneLoads) {
+  const auto scenes = bundled_scenes();
+  EXPECT_GE(scenes.size(), 4u);
+  for (const fs::path& path : scenes) {
+    SCOPED_TRACE(path.string());
+    Scene scene;
+    EXPECT_NO_THROW(scene = load_scene_file(path));
+    EXPECT_FALSE(scene.name.empty());
+    expect_orthonormal_pose(scene.camera.pose);
+  }
+}
+
+TEST(SceneLoader, CornellBoxMatchesThePaperFigure) {
+  const Scene scene = load_scene_file(kSceneDir / "cornell-box.json");
+  ASSERT_EQ(scene.materials.size(), 6u);
+  const char* names[] = {"white", "red", "green", "mirror", "blue", "glossy"};
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(scene.materials[i].name, names[i]);  // document order
+  expect_near(scene.materials[1].diffuse, {0.75, 0.15, 0.15});
+  expect_near(scene.materials[2].diffuse, {0.15, 0.75, 0.15});
+  expect_near(scene.materials[3].mirror, {0.8, 0.8, 0.8});
+  EXPECT_EQ(scene.materials[5].shininess, 40);
+
+  // Walls: left red, right green, floor, back and a ceiling of 4 quads around the window.
+  ASSERT_EQ(scene.meshes.size(), 8u);
+  for (const TriangleMesh& wall : scene.meshes) EXPECT_EQ(wall.indices.size(), 6u);
+  EXPECT_EQ(scene.meshes[0].material, 1u);
+  EXPECT_EQ(scene.meshes[1].material, 2u);
+  expect_facing(scene.meshes, {0, 0, 0}, true);
+
+  ASSERT_EQ(scene.spheres.size(), 3u);
+  for (std::size_t i = 0; i < 3; ++i) {
+    const Sphere& s = scene.spheres[i];
+    for (int axis = 0; axis < 3; ++axis) EXPECT_LT(std::abs(s.center[axis]) + s.radius, 1.0);
+    EXPECT_LT(s.center.y - s.radius, -0.95);  // resting near the floor
+    for (std::size_t j = 0; j < i; ++j)
+      EXPECT_GT(length(s.center - scene.spheres[j].center), s.radius + scene.spheres[j].radius);
+  }
+
+  ASSERT_EQ(scene.lights.size(), 1u);
+  EXPECT_GT(scene.lights[0].position.y, 1.0);  // above the ceiling, light enters by the window
+  expect_orthonormal_pose(scene.camera.pose);
+  expect_near(column(scene.camera.pose, 3), {0, 0, 3.4});
+  expect_near(-column(scene.camera.pose, 2), {0, 0, -1});
+  EXPECT_EQ(scene.camera.fov_y_degrees, 45);
+  EXPECT_EQ(scene.render.width, 512);
+  EXPECT_EQ(scene.render.max_depth, 5);
+  EXPECT_EQ(scene.render.spp, 64);
+  expect_near(scene.render.ambient_light, {0.03, 0.03, 0.03});
+}
+
+TEST(SceneLoader, FurnaceIsAClosedInwardFacingBox) {
+  const Scene scene = load_scene_file(kSceneDir / "furnace.json");
+  ASSERT_EQ(scene.materials.size(), 1u);
+  expect_near(scene.materials[0].diffuse, {0.5, 0.5, 0.5});
+  expect_near(scene.materials[0].emission, {1, 1, 1});
+  EXPECT_EQ(scene.meshes.size(), 6u);
+  expect_facing(scene.meshes, column(scene.camera.pose, 3), true);
+  EXPECT_TRUE(scene.lights.empty());
+  EXPECT_EQ(scene.render.max_depth, 30);
+  expect_near(scene.render.ambient_light, {0, 0, 0});
+}
+
+TEST(SceneLoader, EmissiveSceneHasOnlyEmission) {
+  const Scene scene = load_scene_file(kSceneDir / "emissive.json");
+  EXPECT_TRUE(scene.lights.empty());
+  for (const Material& m : scene.materials) {
+    expect_near(m.diffuse + m.specular + m.mirror + m.ambient, {0, 0, 0});
+    expect_near(m.emission, {0.2, 0.5, 0.8});
+  }
+}
+
+TEST(SceneLoader, LookAtCameraLooksAtTheTarget) {
+  const Scene scene = parse_patched(
+      R"({"camera": {"position": [1, 2, 3], "look_at": [4, -1, 7], "up": [0, 2, 0], "fov_y": 60}})");
+  const Mat4& pose = scene.camera.pose;
+  expect_orthonormal_pose(pose);
+  expect_near(-column(pose, 2), normalize(Vec3(3, -3, 4)));
+  expect_near(column(pose, 3), {1, 2, 3});
+  EXPECT_GT(column(pose, 1).y, 0);           // up stays up
+  EXPECT_NEAR(column(pose, 0).y, 0, 1e-12);  // no roll: right is horizontal
+  EXPECT_EQ(scene.camera.fov_y_degrees, 60);
+}
+
+TEST(SceneLoader, RotationCameraComposesYawPitchRoll) {
+  auto pose_of = [](const std::string& rotation) {
+    return parse_patched(R"({"camera": {"position": [1, 2, 3], "rotation": )" + rotation + "}}")
+        .camera.pose;
+  };
+  const Mat4 identity = pose_of("{}");
+  expect_orthonormal_pose(identity);
+  expect_near(-column(identity, 2), {0, 0, -1});
+  expect_near(column(identity, 3), {1, 2, 3});
+  expect_near(-column(pose_of(R"({"yaw": 90})"), 2), {-1, 0, 0});   // turns left
+  expect_near(-column(pose_of(R"({"pitch": 90})"), 2), {0, 1, 0});  // looks up
+  const Mat4 rolled = pose_of(R"({"roll": 90})");
+  expect_near(-column(rolled, 2), {0, 0, -1});
+  expect_near(column(rolled, 0), {0, -1, 0});  // right side goes down
+  // Pitch is applied before yaw: pitch 30 then yaw 90.
+  const Mat4 both = pose_of(R"({"yaw": 90, "pitch": 30, "roll": 10})");
+  expect_orthonormal_pose(both);
+  expect_near(-column(both, 2), {-std::sqrt(3.0) / 2, 0.5, 0});
+}
+
+TEST(SceneLoader, QuadFacesCrossOfItsEdges) {
+  const Scene scene = parse_object(
+      R"({"type": "quad", "material": "red", "corner": [1, 1, 1], "edge_u": [0, 0, 2], "edge_v": [3, 0, 0]})");
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  const TriangleMesh& quad = scene.meshes[0];
+  EXPECT_EQ(quad.indices.size(), 6u);
+  EXPECT_TRUE(quad.normals.empty());
+  EXPECT_EQ(quad.material, 0u);
+  for (std::size_t t = 0; t < 2; ++t) expect_near(triangle_normal(quad, t), {0, 1, 0});
+  expect_near(quad.positions[2], {4, 1, 3});  // corner + edge_u + edge_v
+}
+
+TEST(SceneLoader, PolygonBecomesAFanFollowingItsWinding) {
+  // A regular hexagon in the tilted plane x + y + z = 1, counter-clockwise about (1,1,1).
+  const Vec3 centre(1.0 / 3, 1.0 / 3, 1.0 / 3), n = normalize(Vec3(1, 1, 1));
+  const Vec3 u = normalize(Vec3(1, -1, 0)), v = cross(n, u);
+  Json vertices = Json::array();
+  for (int k = 0; k < 6; ++k) {
+    const double a = k * std::numbers::pi / 3;
+    const Vec3 p = centre + u * std::cos(a) + v * std::sin(a);
+    vertices.push_back({p.x, p.y, p.z});
+  }
+  const Json object = {{"type", "polygon"}, {"material", "red"}, {"vertices", vertices}};
+  const Scene scene = parse_object(object.dump());
+  const TriangleMesh& fan = scene.meshes.at(0);
+  ASSERT_EQ(fan.indices.size(), 12u);
+  for (std::size_t t = 0; t < 4; ++t) expect_near(triangle_normal(fan, t), n, 1e-12);
+}
+
+TEST(SceneLoader, BoxHasTwelveOutwardTriangles) {
+  const Scene scene =
+      parse_object(R"({"type": "box", "material": "red", "min": [-1, -2, -3], "max": [1, 2, 3]})");
+  const TriangleMesh& box = scene.meshes.at(0);
+  ASSERT_EQ(box.indices.size(), 36u);
+  expect_facing({box}, {0, 0, 0}, false);
+  std::set<std::tuple<double, double, double>> normals;
+  for (std::size_t t = 0; t < 12; ++t) {
+    const Vec3 n = triangle_normal(box, t);
+    normals.insert({n.x, n.y, n.z});
+  }
+  EXPECT_EQ(normals.size(), 6u);  // each axis direction, twice each
+  for (const Vec3& p : box.positions)
+    expect_near({std::abs(p.x), std::abs(p.y), std::abs(p.z)}, {1, 2, 3});
+}
+
+TEST(SceneLoader, BoxFacesAndRotation) {
+  const Scene one_face = parse_object(
+      R"({"type": "box", "material": "red", "min": [0, 0, 0], "max": [1, 1, 1], "faces": ["+y"]})");
+  ASSERT_EQ(one_face.meshes.at(0).indices.size(), 6u);
+  expect_near(triangle_normal(one_face.meshes[0], 0), {0, 1, 0});
+
+  // A 2x1x1 box turned a quarter about +y around its centre (1, 0.5, 0.5).
+  const Scene turned = parse_object(
+      R"({"type": "box", "material": "red", "min": [0, 0, 0], "max": [2, 1, 1], "rotation": {"yaw": 90}})");
+  const TriangleMesh& box = turned.meshes.at(0);
+  expect_facing({box}, {1, 0.5, 0.5}, false);
+  for (const Vec3& p : box.positions) {
+    EXPECT_NEAR(std::abs(p.x - 1), 0.5, 1e-12);
+    EXPECT_NEAR(std::abs(p.z - 0.5), 1.0, 1e-12);
+  }
+}
+
+TEST(SceneLoader, AcceptsTheTrivialManifoldAndGreyShorthand) {
+  EXPECT_NO_THROW(parse_patched(R"({"manifold": {"type": "none"}})"));
+  const Scene scene = parse_patched(R"({"materials": {"red": {"diffuse": 0.25}}})");
+  expect_near(scene.materials[0].diffuse, {0.25, 0.25, 0.25});
+  EXPECT_EQ(scene.materials[0].shininess, 1);
+}
+
+TEST(SceneLoader, RejectsInvalidDocumentsNamingTheField) {
+  const std::pair<std::string, std::string> cases[] = {
+      {R"({"colour": 1})", R"((root): unknown field "colour")"},
+      {R"({"name": 3})", "name: must be a string"},
+      {R"({"geometry": null})", R"((root): missing required field "geometry")"},
+      {R"({"geometry": "hyperbolic"})",
+       R"(geometry: "hyperbolic" is not supported yet (only "euclidean"))"},
+      {R"({"geometry": "spherical"})",
+       R"(geometry: "spherical" is not supported yet (only "euclidean"))"},
+      {R"({"geometry": "flat"})", R"(geometry: unknown geometry "flat" (expected "euclidean"))"},
+      {R"({"manifold": {"type": "torus"}})",
+       R"(manifold.type: quotient manifolds are not supported yet (only "none"))"},
+      {R"({"manifold": 3})", "manifold: must be null or an object"},
+      {R"({"camera": {"position": null}})", R"(camera: missing required field "position")"},
+      {R"({"camera": {"position": [0, 0]}})", "camera.position: must be an array of 3 numbers"},
+      {R"({"camera": {"position": [0, 2e6, 0]}})",
+       "camera.position[1]: must have magnitude <= 1e6"},
+      {R"({"camera": {"fov_y": 180}})", "camera.fov_y: must be in (0, 180)"},
+      {R"({"camera": {"fov_y": "wide"}})", "camera.fov_y: must be a number"},
+      {R"({"camera": {"look_at": [0, 0, 5]}})", "camera.look_at: must differ from camera.position"},
+      {R"({"camera": {"look_at": [0, 0, 0], "up": [0, 0, 1]}})",
+       "camera.up: must not be parallel to the view direction"},
+      {R"({"camera": {"look_at": [0, -5, 5]}})",
+       "camera.up: must not be parallel to the view direction"},
+      {R"({"camera": {"look_at": [0, 0, 0], "up": [0, 0, 0]}})", "camera.up: must be non-zero"},
+      {R"({"camera": {"look_at": [0, 0, 0], "rotation": {}}})",
+       R"(camera: give either "look_at" or "rotation", not both)"},
+      {R"({"camera": {"up": [0, 1, 0]}})", R"(camera.up: only allowed together with "look_at")"},
+      {R"({"camera": {"rotation": {"yaw": "left"}}})", "camera.rotation.yaw: must be a number"},
+      {R"({"camera": {"rotation": {"tilt": 1}}})", R"(camera.rotation: unknown field "tilt")"},
+      {R"({"materials": []})", "materials: must be an object mapping names to materials"},
+      {R"({"materials": {"red": {"glow": 1}}})", R"(materials.red: unknown field "glow")"},
+      {R"({"materials": {"red": {"diffuse": [0.8, -0.1, 0.1]}}})",
+       "materials.red.diffuse[1]: must be a finite number >= 0"},
+      {R"({"materials": {"red": {"diffuse": "red"}}})",
+       "materials.red.diffuse: must be a number or an array of 3 numbers"},
+      {R"({"materials": {"red": {"emission": [1, 1]}}})",
+       "materials.red.emission: must be a number or an array of 3 numbers"},
+      {R"({"materials": {"red": {"shininess": -1}}})",
+       "materials.red.shininess: must be a finite number >= 0"},
+      {R"({"materials": {"red": {"diffuse": 0.6, "mirror": [0.1, 0.5, 0.1]}}})",
+       "materials.red: diffuse[1] + mirror[1] must be <= 1 (energy conservation)"},
+      {R"({"objects": {}})", "objects: must be an array of objects"},
+      {R"({"lights": [{"type": "spot", "position": [0, 0, 0], "intensity": 1}]})",
+       R"(lights[0].type: unknown light type "spot" (expected "point"))"},
+      {R"({"lights": [{"type": "point", "position": [0, 0, 0], "intensity": [1, 1]}]})",
+       "lights[0].intensity: must be a number or an array of 3 numbers"},
+      {R"({"lights": [{"type": "point", "position": [0, 0, 0]}]})",
+       R"(lights[0]: missing required field "intensity")"},
+      {R"({"render": {"exposure": 1}})", R"(render: unknown field "exposure")"},
+      {R"({"render": {"width": 0}})", "render.width: must be an integer in [1, 8192]"},
+      {R"({"render": {"height": 1.5}})", "render.height: must be an integer in [1, 8192]"},
+      {R"({"render": {"max_depth": 65}})", "render.max_depth: must be an integer in [0, 64]"},
+      {R"({"render": {"spp": 0}})", "render.spp: must be an integer in [1, 1000000]"},
+      {R"({"render": {"seed": -1}})", "render.seed: must be an unsigned integer"},
+      {R"({"render": {"ambient": -0.1}})", "render.ambient: must be a finite number >= 0"},
+  };
+  for (const auto& [patch, message] : cases) EXPECT_EQ(error_of(patch), message) << patch;
+  EXPECT_EQ(error_of_document(Json::array()), "(root): must be an object");
+}
+
+// Each case is the document's only object, so every message starts with objects[0].
+TEST(SceneLoader, RejectsInvalidObjectsNamingTheField) {
+  const std::string sphere = R"({"type": "sphere", "material": "red", "center": [0, 0, 0], )";
+  const std::string quad = R"({"type": "quad", "material": "red", "corner": [0, 0, 0], )";
+  const std::string polygon = R"({"type": "polygon", "material": "red", "vertices": )";
+  const std::string box = R"({"type": "box", "material": "red", "min": [0, 0, 0], )";
+  const std::string mesh =
+      R"({"type": "mesh", "material": "red", "file": "meshes/octahedron.obj", )";
+  const std::pair<std::string, std::string> cases[] = {
+      {"3", "objects[0]: must be an object"},
+      {R"({"material": "red"})", R"(objects[0]: missing required field "type")"},
+      {R"({"type": "cone", "material": "red"})",
+       R"(objects[0].type: unknown object type "cone" (expected "sphere", "quad", "polygon", )"
+       R"("box" or "mesh"))"},
+      {sphere + R"("radius": 1, "colour": "red"})", R"(objects[0]: unknown field "colour")"},
+      {sphere + R"("radius": -1})", "objects[0].radius: must be > 0"},
+      {sphere + R"("radius": 2e6})", "objects[0].radius: must be <= 1e6"},
+      {sphere + R"("radius": "1"})", "objects[0].radius: must be a number"},
+      {sphere + R"("radius": true})", "objects[0].radius: must be a number"},
+      {R"({"type": "sphere", "material": "red", "center": [0, 0, 0]})",
+       R"(objects[0]: missing required field "radius")"},
+      {R"({"type": "sphere", "material": "blue", "center": [0, 0, 0], "radius": 1})",
+       R"(objects[0].material: unknown material "blue")"},
+      {R"({"type": "sphere", "center": [0, 0, 0], "radius": 1})",
+       R"(objects[0]: missing required field "material")"},
+      {R"({"type": "sphere", "material": "red", "center": [0, "x", 0], "radius": 1})",
+       "objects[0].center[1]: must be a number"},
+      {quad + R"("edge_u": [1, 0, 0], "edge_v": [2, 0, 0]})",
+       "objects[0]: degenerate quad: edge_u and edge_v must be non-zero and not parallel"},
+      {quad + R"("edge_u": [0, 0, 0], "edge_v": [0, 1, 0]})",
+       "objects[0]: degenerate quad: edge_u and edge_v must be non-zero and not parallel"},
+      {polygon + "[[0, 0, 0], [1, 0, 0]]}",
+       "objects[0].vertices: must be an array of at least 3 points"},
+      {polygon + "[[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0.2]]}",
+       "objects[0].vertices: polygon is not planar"},
+      {polygon + "[[0, 0, 0], [2, 0, 0], [1, 0.5, 0], [2, 2, 0], [0, 2, 0]]}",
+       "objects[0].vertices: polygon must be strictly convex (no reflex, repeated or collinear "
+       "vertices)"},
+      {polygon + "[[0, 0, 0], [1, 0, 0], [2, 0, 0]]}",
+       "objects[0].vertices: degenerate polygon: it has no area"},
+      {box + R"("max": [1, 1, 0]})", "objects[0].max[2]: must be greater than min[2]"},
+      {box + R"("max": [1, 1, 1], "faces": ["+x", "+w"]})",
+       R"(objects[0].faces[1]: must be one of "+x", "-x", "+y", "-y", "+z", "-z")"},
+      {box + R"("max": [1, 1, 1], "faces": ["+x", "+x"]})",
+       R"(objects[0].faces[1]: face "+x" is listed twice)"},
+      {box + R"("max": [1, 1, 1], "faces": []})",
+       "objects[0].faces: must be a non-empty array of face names"},
+      {box + R"("max": [1, 1, 1], "rotation": {"yaw": 1, "spin": 2}})",
+       R"(objects[0].rotation: unknown field "spin")"},
+      {mesh + R"("scale": 0})", "objects[0].scale: must be > 0"},
+      {mesh + R"("scale": [1, 2]})", "objects[0].scale: must be a number or an array of 3 numbers"},
+      {mesh + R"("scale": [1, -2, 1]})", "objects[0].scale[1]: must be > 0"},
+      {R"({"type": "mesh", "material": "red", "file": 7})", "objects[0].file: must be a string"},
+  };
+  for (const auto& [object, message] : cases)
+    EXPECT_EQ(error_of(R"({"objects": [)" + object + "]}"), message) << object;
+}
+
+TEST(SceneLoader, MissingMeshFileNamesTheFieldAndPath) {
+  const std::string expected =
+      "objects[0].file: file not found: \"" + (kSceneDir / "meshes/nope.obj").string() + "\"";
+  EXPECT_EQ(
+      error_of(R"({"objects": [{"type": "mesh", "material": "red", "file": "meshes/nope.obj"}]})"),
+      expected);
+}
+
+class SceneFileTest : public ::testing::Test {
+ protected:
+  void TearDown() override { fs::remove(path_); }
+  fs::path write(const std::string& text) {
+    std::ofstream(path_) << text;
+    return path_;
+  }
+  fs::path path_ = fs::temp_directory_path() / "geodesic_scene_loader_test.json";
+};
+
+TEST_F(SceneFileTest, MissingFileNamesIt) {
+  try {
+    load_scene_file("/nonexistent/scene.json");
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "/nonexistent/scene.json: cannot open file (missing or not a regular file)");
+  }
+}
+
+TEST_F(SceneFileTest, InvalidJsonGivesFileAndPosition) {
+  const fs::path path = write("{\n  \"geometry\": \"euclidean\",,\n}");
+  try {
+    load_scene_file(path);
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind(path.string() + ": invalid JSON: parse error at line 2, column ", 0), 0u)
+        << what;
+  }
+}
+
+// JSON text cannot spell NaN or infinity, and nlohmann rejects overflowing literals.
+TEST_F(SceneFileTest, OverflowingNumberIsInvalidJson) {
+  const std::string text = Json::parse(kBase).dump();
+  const std::string marker = "\"center\":[0,0,0]";
+  std::string patched = text;
+  patched.replace(text.find(marker), marker.size(), "\"center\":[0,1e400,0]");
+  try {
+    load_scene_file(write(patched));
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              path_.string() + ": invalid JSON: number overflow parsing '1e400'");
+  }
+}
+
+// A document built in memory can hold non-finite numbers; they are rejected by field.
+TEST(SceneLoader, RejectsNonFiniteNumbers) {
+  Json doc = Json::parse(kBase);
+  doc["objects"][0]["center"][1] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(error_of_document(doc), "objects[0].center[1]: must be a finite number");
+  doc = Json::parse(kBase);
+  doc["materials"]["red"]["emission"] = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(error_of_document(doc), "materials.red.emission: must be a finite number >= 0");
+}
+
+// The schema documents the format; every field a bundled scene uses must be declared there.
+TEST(SceneSchema, DeclaresEveryFieldTheBundledScenesUse) {
+  std::ifstream in(fs::path(GEODESIC_SOURCE_DIR) / "proto" / "scene.schema.json");
+  const Json schema = Json::parse(in);
+  EXPECT_EQ(schema.at("$schema"), "https://json-schema.org/draft/2020-12/schema");
+  EXPECT_EQ(schema.at("additionalProperties"), false);
+  const Json& defs = schema.at("$defs");
+  auto expect_declared = [](const Json& value, const Json& definition, const std::string& where) {
+    EXPECT_EQ(definition.at("additionalProperties"), false) << where;
+    for (const auto& item : value.items())
+      EXPECT_TRUE(definition.at("properties").contains(item.key())) << where << "." << item.key();
+  };
+  for (const fs::path& path : bundled_scenes()) {
+    std::ifstream scene_in(path);
+    const Json scene = Json::parse(scene_in);
+    expect_declared(scene, schema, path.filename().string());
+    expect_declared(scene.at("camera"), defs.at("camera"), "camera");
+    if (scene.contains("render")) expect_declared(scene.at("render"), defs.at("render"), "render");
+    for (const auto& material : scene.at("materials").items())
+      expect_declared(material.value(), defs.at("material"), "materials." + material.key());
+    for (const Json& object : scene.at("objects")) {
+      const std::string type = object.at("type");
+      expect_declared(object, defs.at(type), type);
+    }
+    for (const Json& light : scene.value("lights", Json::array()))
+      expect_declared(light, defs.at("point_light"), "light");
+  }
+}
+
+}  // namespace
+}  // namespace geodesic
