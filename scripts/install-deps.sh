@@ -30,6 +30,27 @@ debian_archive_uri() {
   done
 }
 
+packages=(
+  build-essential cmake ninja-build pkg-config git ca-certificates
+  libvulkan-dev vulkan-tools glslang-tools glslang-dev spirv-tools
+  nlohmann-json3-dev libopenimageio-dev openimageio-tools
+  libgtest-dev libgmock-dev libassimp-dev
+  libboost-dev libboost-system-dev libsqlite3-dev libturbojpeg0-dev
+  python3
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+mesa_version=$(dpkg-query -W -f='${Version}' mesa-vulkan-drivers 2>/dev/null || true)
+mesa_major=${mesa_version%%.*}
+mesa_major=${mesa_major#*:}
+if [ ${#missing[@]} -eq 0 ] && [ -n "$mesa_major" ] && [ "$mesa_major" -ge 24 ]; then
+  echo "install-deps: everything is installed (Mesa $mesa_version)"
+  exit 0
+fi
+
 if ! grep -rqs "bookworm-backports" /etc/apt/sources.list /etc/apt/sources.list.d/; then
   uri=$(debian_archive_uri | head -n1)
   if [ -z "$uri" ]; then
@@ -47,15 +68,9 @@ SRC
 fi
 
 apt-get update -qq
-
-apt-get install -y -qq --no-install-recommends \
-  build-essential cmake ninja-build pkg-config git ca-certificates \
-  libvulkan-dev vulkan-tools glslang-tools glslang-dev spirv-tools \
-  nlohmann-json3-dev libopenimageio-dev openimageio-tools \
-  libgtest-dev libgmock-dev libassimp-dev \
-  libboost-dev libboost-system-dev libsqlite3-dev libturbojpeg0-dev \
-  python3
-
+if [ ${#missing[@]} -gt 0 ]; then
+  apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
 # Lavapipe with VK_KHR_ray_tracing_pipeline (Mesa >= 24.1) from backports.
 apt-get install -y -qq --no-install-recommends -t bookworm-backports mesa-vulkan-drivers
 

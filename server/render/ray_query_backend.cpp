@@ -5,7 +5,7 @@
 namespace geodesic {
 namespace {
 
-constexpr uint32_t kGroupSize = 8;  // local_size of shaders/entry/ray_query.comp
+constexpr uint32_t kGroupSizeX = 8, kGroupSizeY = 8;  // ray_query.comp local_size
 
 class RayQueryBackend : public TraceBackend {
  public:
@@ -31,8 +31,8 @@ class RayQueryBackend : public TraceBackend {
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, res_.pipeline_layout(), 0, 1,
                             &set, 0, nullptr);
     vkCmdPushConstants(cmd, res_.pipeline_layout(), SceneResources::kShaderStages, 0, sizeof(range), &range);
-    vkCmdDispatch(cmd, (res_.width() + kGroupSize - 1) / kGroupSize,
-                  (res_.height() + kGroupSize - 1) / kGroupSize, 1);
+    vkCmdDispatch(cmd, (res_.width() + kGroupSizeX - 1) / kGroupSizeX,
+                  (res_.height() + kGroupSizeY - 1) / kGroupSizeY, 1);
   }
 
  private:

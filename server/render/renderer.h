@@ -17,6 +17,7 @@ class Renderer {
   // Adds `samples` samples per pixel, in one submission.
   void add_samples(uint32_t samples);
   uint32_t samples() const { return samples_; }
+  uint64_t traced_rays() const { return resources_.traced_rays(); }
   // Starts over (e.g. after the camera moved); sample indices restart too.
   void reset();
 

@@ -12,7 +12,7 @@ constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
 // Binding numbers of shaders/common/scene_data.glsl.
 enum Binding : uint32_t {
   kScene = 0, kAccumulation, kFrame, kSpheres, kMaterials, kLights, kPositions, kNormals,
-  kIndices, kTriangles, kBindingCount
+  kIndices, kTriangles, kRayCounts, kBindingCount
 };
 
 FrameUniforms make_uniforms(const Scene& scene) {
@@ -40,6 +40,7 @@ SceneResources::SceneResources(VulkanContext& ctx, const Scene& scene)
   std::memcpy(frame_.mapped(), &uniforms_, sizeof(uniforms_));
   accumulation_ = GpuBuffer(ctx, VkDeviceSize(width()) * height() * 4 * sizeof(float),
                             kStorage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  ray_counts_ = GpuBuffer(ctx, VkDeviceSize(width()) * height() * sizeof(uint32_t), kStorage);
   clear_accumulation();
   spheres_ = GpuBuffer::from_vector(ctx, packed_.spheres, kStorage);
   materials_ = GpuBuffer::from_vector(ctx, packed_.materials, kStorage);
@@ -61,6 +62,14 @@ SceneResources::~SceneResources() {
 
 void SceneResources::clear_accumulation() {
   std::memset(accumulation_.mapped(), 0, accumulation_.size());
+  std::memset(ray_counts_.mapped(), 0, ray_counts_.size());
+}
+
+uint64_t SceneResources::traced_rays() const {
+  const auto* counts = static_cast<const uint32_t*>(ray_counts_.mapped());
+  uint64_t total = 0;
+  for (size_t i = 0; i < size_t(width()) * height(); ++i) total += counts[i];
+  return total;
 }
 
 void SceneResources::create_descriptors() {
@@ -112,7 +121,7 @@ void SceneResources::create_descriptors() {
   const GpuBuffer* buffers[kBindingCount] = {nullptr,     &accumulation_, &frame_,
                                              &spheres_,   &materials_,    &lights_,
                                              &positions_, &normals_,      &indices_,
-                                             &triangles_};
+                                             &triangles_,   &ray_counts_};
   VkDescriptorBufferInfo infos[kBindingCount]{};
   VkWriteDescriptorSet writes[kBindingCount]{};
   for (uint32_t i = 0; i < kBindingCount; ++i) {

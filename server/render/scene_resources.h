@@ -33,6 +33,8 @@ class SceneResources {
   // Running per-pixel sums: rgb = radiance sum, a = sample count.
   const float* accumulation() const { return static_cast<const float*>(accumulation_.mapped()); }
   void clear_accumulation();
+  // Rays traced since the last clear, summed over pixels.
+  uint64_t traced_rays() const;
 
  private:
   void create_descriptors();
@@ -42,7 +44,7 @@ class SceneResources {
   PackedScene packed_;
   SceneAccelerationStructures structures_;
   GpuBuffer frame_, accumulation_, spheres_, materials_, lights_, positions_, normals_,
-      indices_, triangles_;
+      indices_, triangles_, ray_counts_;
   VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
   VkDescriptorSet set_ = VK_NULL_HANDLE;

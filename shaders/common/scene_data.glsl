@@ -48,6 +48,11 @@ layout(set = 0, binding = 6, std430) readonly buffer Positions { vec4 positions[
 layout(set = 0, binding = 7, std430) readonly buffer Normals { vec4 normals[]; };
 layout(set = 0, binding = 8, std430) readonly buffer Indices { uint indices[]; };
 layout(set = 0, binding = 9, std430) readonly buffer Triangles { TriangleInfo triangles[]; };
+// Rays traced per pixel (camera, bounce and shadow rays), for rays/s figures.
+layout(set = 0, binding = 10, std430) buffer RayCounts { uint rayCounts[]; };
+
+// Rays traced by this invocation so far; the entry points' trace functions count into it.
+uint tracedRays = 0u;
 
 // Which samples this dispatch adds: [sampleStart, sampleStart + sampleCount).
 layout(push_constant) uniform Push {

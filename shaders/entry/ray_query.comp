@@ -18,6 +18,7 @@ void confirmSphereCandidate(rayQueryEXT q, Ray ray, float tMax) {
 }
 
 Surface traceSurface(Ray ray) {
+  ++tracedRays;
   rayQueryEXT q;
   rayQueryInitializeEXT(q, uScene, gl_RayFlagsOpaqueEXT, 0xFF, ray.origin, 0.0, ray.direction, FAR);
   while (rayQueryProceedEXT(q)) {
@@ -36,6 +37,7 @@ Surface traceSurface(Ray ray) {
 }
 
 bool traceOccluded(Ray ray, float maxDistance) {
+  ++tracedRays;
   rayQueryEXT q;
   rayQueryInitializeEXT(q, uScene, gl_RayFlagsOpaqueEXT | gl_RayFlagsTerminateOnFirstHitEXT, 0xFF,
                         ray.origin, 0.0, ray.direction, maxDistance);

@@ -43,6 +43,7 @@ void accumulatePixel(uvec2 pixel) {
     if (!any(isnan(value)) && !any(isinf(value))) sum += value;
   }
   accumulation[index] += vec4(sum, float(push.sampleCount));
+  rayCounts[index] += tracedRays;
 }
 
 #endif
