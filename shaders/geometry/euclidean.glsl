@@ -29,10 +29,11 @@ Ray cameraRay(mat4 pose, vec3 directionInCamera) {
   return r;
 }
 
-// A spawn point off the surface along its normal, scaled with the magnitude of p so that
-// float round-off never lets a secondary ray hit the surface it leaves.
+// A spawn point off the surface along its normal: a fixed 1e-4 plus 2^-15 of p's magnitude
+// (about 256 float ulps), so float round-off never lets a secondary ray hit the surface it
+// leaves, while small objects far from the origin are not stepped over.
 vec3 offsetFromSurface(vec3 p, vec3 n) {
-  float scale = 1e-4 * (1.0 + max(abs(p.x), max(abs(p.y), abs(p.z))));
+  float scale = 1e-4 + (1.0 / 32768.0) * max(abs(p.x), max(abs(p.y), abs(p.z)));
   return p + scale * n;
 }
 

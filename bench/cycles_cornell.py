@@ -1,0 +1,127 @@
+# Blender Cycles baseline for bench/run.sh: builds the same scene from Geodesic's JSON (quads,
+# boxes and spheres with diffuse / glossy / mirror materials, point lights), renders it on the
+# CPU with 2 threads, no denoising and no adaptive sampling, and prints paths/s.
+#   blender -b --factory-startup -P bench/cycles_cornell.py -- SCENE.json SPP [OUT.png]
+import json
+import math
+import sys
+import time
+
+import bpy
+from mathutils import Matrix, Vector
+
+args = sys.argv[sys.argv.index("--") + 1:]
+scene_path, spp = args[0], int(args[1])
+out_path = args[2] if len(args) > 2 else "/tmp/cycles-baseline.png"
+doc = json.load(open(scene_path))
+
+
+def rgb(value, default=0.0):
+    if value is None:
+        value = default
+    return list(value) if isinstance(value, list) else [value] * 3
+
+
+bpy.ops.wm.read_factory_settings(use_empty=True)
+scene = bpy.context.scene
+
+
+def make_material(name, m):
+    mat = bpy.data.materials.new(name)
+    mat.use_nodes = True
+    nodes, links = mat.node_tree.nodes, mat.node_tree.links
+    nodes.clear()
+    out = nodes.new("ShaderNodeOutputMaterial")
+    diffuse = nodes.new("ShaderNodeBsdfDiffuse")
+    diffuse.inputs["Color"].default_value = rgb(m.get("diffuse")) + [1]
+    shader = diffuse
+    mirror = max(rgb(m.get("mirror")))
+    if mirror > 0:
+        glossy = nodes.new("ShaderNodeBsdfGlossy")
+        glossy.inputs["Roughness"].default_value = 0.0
+        glossy.inputs["Color"].default_value = [1, 1, 1, 1]
+        mix = nodes.new("ShaderNodeMixShader")
+        mix.inputs["Fac"].default_value = mirror
+        links.new(diffuse.outputs[0], mix.inputs[1])
+        links.new(glossy.outputs[0], mix.inputs[2])
+        shader = mix
+    links.new(shader.outputs[0], out.inputs["Surface"])
+    return mat
+
+
+materials = {name: make_material(name, m) for name, m in doc["materials"].items()}
+
+
+def add_mesh(name, verts, faces, material):
+    mesh = bpy.data.meshes.new(name)
+    mesh.from_pydata(verts, [], faces)
+    obj = bpy.data.objects.new(name, mesh)
+    obj.data.materials.append(materials[material])
+    scene.collection.objects.link(obj)
+
+
+for i, o in enumerate(doc["objects"]):
+    if o["type"] == "quad":
+        c, u, v = Vector(o["corner"]), Vector(o["edge_u"]), Vector(o["edge_v"])
+        add_mesh(f"quad{i}", [c, c + u, c + u + v, c + v], [(0, 1, 2, 3)], o["material"])
+    elif o["type"] == "sphere":
+        bpy.ops.mesh.primitive_uv_sphere_add(segments=64, ring_count=32, radius=o["radius"],
+                                             location=o["center"])
+        obj = bpy.context.active_object
+        bpy.ops.object.shade_smooth()
+        obj.data.materials.append(materials[o["material"]])
+    else:
+        raise SystemExit(f"cycles_cornell.py: object type {o['type']} not supported")
+
+for i, l in enumerate(doc.get("lights", [])):
+    light = bpy.data.lights.new(f"light{i}", "POINT")
+    light.shadow_soft_size = 0.0
+    # Blender's point light power P [W] gives radiant intensity P / (4 pi).
+    light.energy = 4 * math.pi * max(rgb(l["intensity"]))
+    obj = bpy.data.objects.new(f"light{i}", light)
+    obj.location = l["position"]
+    scene.collection.objects.link(obj)
+
+cam = doc["camera"]
+camera = bpy.data.objects.new("camera", bpy.data.cameras.new("camera"))
+camera.location = cam["position"]
+direction = Vector(cam["look_at"]) - Vector(cam["position"])
+camera.rotation_euler = direction.to_track_quat("-Z", "Y").to_euler()
+camera.data.sensor_fit = "VERTICAL"
+camera.data.angle_y = math.radians(cam.get("fov_y", 45))
+scene.collection.objects.link(camera)
+scene.camera = camera
+
+render = doc.get("render", {})
+scene.render.engine = "CYCLES"
+scene.cycles.device = "CPU"
+scene.render.threads_mode = "FIXED"
+scene.render.threads = 2
+scene.cycles.use_adaptive_sampling = False
+scene.cycles.use_denoising = False
+depth = render.get("max_depth", 5)
+scene.cycles.max_bounces = depth
+scene.cycles.diffuse_bounces = depth
+scene.cycles.glossy_bounces = depth
+scene.render.resolution_x = render.get("width", 512)
+scene.render.resolution_y = render.get("height", 512)
+scene.render.resolution_percentage = 100
+scene.render.filepath = out_path
+
+
+
+def timed_render(samples):
+    scene.cycles.samples = samples
+    start = time.time()
+    bpy.ops.render.render(write_still=True)
+    return time.time() - start
+
+
+# Marginal throughput: a 1-sample render measures scene sync and BVH build, which the
+# spp-sample render also pays; their difference is the time spent tracing paths.
+setup = timed_render(1)
+seconds = timed_render(spp)
+pixels = scene.render.resolution_x * scene.render.resolution_y
+print(f"cycles: {spp} spp at {scene.render.resolution_x}x{scene.render.resolution_y}, "
+      f"depth {depth}, in {seconds:.2f} s ({setup:.2f} s for 1 spp): "
+      f"{(spp - 1) * pixels / (seconds - setup) / 1e6:.3f} M paths/s")
