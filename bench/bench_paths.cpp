@@ -1,7 +1,7 @@
 // Throughput of the path tracer on a scene (default: the bundled Cornell box at 512x512,
 // depth 5): paths/s and rays/s for each tracing back end the device offers, measured in the
 // same run, with their ratio.
-//   geodesic_bench [SCENE.json] [--spp N] [--device SEL] [--repeat R]
+//   geodesic_bench [SCENE.json] [--spp N] [--device SEL] [--repeat R] [--russian-roulette]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -47,19 +47,24 @@ int main(int argc, char** argv) {
   std::string device;
   uint32_t spp = 16;
   int repeat = 3;
+  bool russian_roulette = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--spp" && i + 1 < argc) spp = std::stoul(argv[++i]);
     else if (a == "--device" && i + 1 < argc) device = argv[++i];
     else if (a == "--repeat" && i + 1 < argc) repeat = std::stoi(argv[++i]);
+    else if (a == "--russian-roulette") russian_roulette = true;
     else scene_path = a;
   }
   try {
     Scene scene = load_scene_file(scene_path);
+    scene.render.russian_roulette = scene.render.russian_roulette || russian_roulette;
     VulkanContext ctx(device);
-    std::printf("scene %s, %dx%d, depth %d, %u spp per run, best of %d, device %s\n",
+    std::printf("scene %s, %dx%d, depth %d%s, %u spp per run, best of %d, device %s\n",
                 scene_path.c_str(), scene.render.width, scene.render.height,
-                scene.render.max_depth, spp, repeat, ctx.description().name.c_str());
+                scene.render.max_depth,
+                scene.render.russian_roulette ? " with Russian roulette" : "", spp, repeat,
+                ctx.description().name.c_str());
     std::vector<std::pair<std::string, Measurement>> results;
     if (ctx.description().ray_query)
       results.emplace_back("ray-query", measure(ctx, scene, BackendKind::RayQuery, spp, repeat));

@@ -4,6 +4,7 @@
 #   blender -b --factory-startup -P bench/cycles_cornell.py -- SCENE.json SPP [OUT.png]
 import json
 import math
+import os
 import sys
 import time
 
@@ -103,6 +104,10 @@ depth = render.get("max_depth", 5)
 scene.cycles.max_bounces = depth
 scene.cycles.diffuse_bounces = depth
 scene.cycles.glossy_bounces = depth
+# Cycles ends paths early by Russian roulette after min_light_bounces; FULL_DEPTH=1 in the
+# environment sets it to the depth, so every path runs to full depth as in Geodesic's paper mode.
+if os.environ.get("FULL_DEPTH") == "1":
+    scene.cycles.min_light_bounces = depth
 scene.render.resolution_x = render.get("width", 512)
 scene.render.resolution_y = render.get("height", 512)
 scene.render.resolution_percentage = 100

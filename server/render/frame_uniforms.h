@@ -16,7 +16,7 @@ struct FrameUniforms {
   uint32_t max_depth;
   uint32_t light_count;
   uint32_t seed;
-  uint32_t padding;
+  uint32_t russian_roulette;  // 0 or 1
 };
 static_assert(sizeof(FrameUniforms) == 112, "must match the std140 layout of Frame");
 

@@ -28,6 +28,7 @@ FrameUniforms make_uniforms(const Scene& scene) {
   u.max_depth = static_cast<uint32_t>(scene.render.max_depth);
   u.light_count = static_cast<uint32_t>(scene.lights.size());
   u.seed = static_cast<uint32_t>(scene.render.seed ^ (scene.render.seed >> 32));
+  u.russian_roulette = scene.render.russian_roulette ? 1u : 0u;
   return u;
 }
 

@@ -109,6 +109,11 @@ inline int read_int(const JsonNode& node, int lo, int hi) {
   return static_cast<int>(v.get<int64_t>());
 }
 
+inline bool read_bool(const JsonNode& node) {
+  if (!node.value().is_boolean()) node.fail("must be true or false");
+  return node.value().get<bool>();
+}
+
 inline uint64_t read_uint64(const JsonNode& node) {
   if (!node.value().is_number_unsigned()) node.fail("must be an unsigned integer");
   return node.value().get<uint64_t>();

@@ -59,6 +59,9 @@ struct RenderSettings {
   int spp = 64;
   uint64_t seed = 1;
   Vec3 ambient_light;  // L_a of eq. 2.2
+  // End paths at random after the first bounce, with probability 1 - max(throughput), and
+  // reweight survivors: the same expected image from cheaper paths (as Cycles does).
+  bool russian_roulette = false;
 };
 
 struct Scene {

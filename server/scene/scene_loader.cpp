@@ -296,7 +296,8 @@ PointLight read_light(const JsonNode& node) {
 }
 
 RenderSettings read_render(const JsonNode& node) {
-  node.expect_object({"width", "height", "max_depth", "spp", "seed", "ambient"});
+  node.expect_object({"width", "height", "max_depth", "spp", "seed", "ambient",
+                      "russian_roulette"});
   RenderSettings render;
   if (const auto n = node.find("width")) render.width = read_int(*n, 1, 8192);
   if (const auto n = node.find("height")) render.height = read_int(*n, 1, 8192);
@@ -304,6 +305,7 @@ RenderSettings read_render(const JsonNode& node) {
   if (const auto n = node.find("spp")) render.spp = read_int(*n, 1, 1000000);
   if (const auto n = node.find("seed")) render.seed = read_uint64(*n);
   if (const auto n = node.find("ambient")) render.ambient_light = read_rgb(*n);
+  if (const auto n = node.find("russian_roulette")) render.russian_roulette = read_bool(*n);
   return render;
 }
 

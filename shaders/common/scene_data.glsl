@@ -39,7 +39,7 @@ layout(set = 0, binding = 2, std140) uniform Frame {
   uint maxDepth;
   uint lightCount;
   uint seed;
-  uint padding;
+  uint russianRoulette;  // 0 or 1
 } frame;
 layout(set = 0, binding = 3, std430) readonly buffer Spheres { Sphere spheres[]; };
 layout(set = 0, binding = 4, std430) readonly buffer Materials { Material materials[]; };

@@ -18,6 +18,12 @@ vec3 pathRadiance(Ray ray, inout uint rng) {
     vec3 direction, weight;
     if (!sampleBounce(s, ray.direction, m, rng, direction, weight)) break;
     throughput *= weight;
+    if (frame.russianRoulette != 0u && depth >= 1u) {
+      // Survive with probability q and divide by it: unbiased, and dim paths end early.
+      float q = min(1.0, max(throughput.r, max(throughput.g, throughput.b)));
+      if (rngNext(rng) >= q) break;
+      throughput /= q;
+    }
     ray = Ray(offsetFromSurface(s.position, s.geometricNormal), direction);
   }
   return radiance;

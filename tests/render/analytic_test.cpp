@@ -57,3 +57,22 @@ INSTANTIATE_TEST_SUITE_P(Render, BothBackends,
 
 }  // namespace
 }  // namespace geodesic::test
+
+namespace geodesic::test {
+namespace {
+
+// Russian roulette changes which paths get traced, not the expected image: the furnace still
+// converges to Le / (1 - rho) over the image.
+TEST(RussianRoulette, KeepsTheFurnaceUnbiased) {
+  Scene scene = scene_from_json(furnace(0.5, 1.0, 40));
+  scene.render.russian_roulette = true;
+  const Image image = render(scene, 64);
+  const Rgb m = mean(image);
+  EXPECT_NEAR(m.r, 2.0, 0.01 * 2.0);
+  EXPECT_NEAR(m.g, 2.0, 0.01 * 2.0);
+  // ... and it is a real Monte Carlo estimate now: pixels differ.
+  EXPECT_GT(rms_difference(image, render(scene_from_json(furnace(0.5, 1.0, 40)), 1)), 1e-3);
+}
+
+}  // namespace
+}  // namespace geodesic::test

@@ -326,6 +326,7 @@ TEST(SceneLoader, RejectsInvalidDocumentsNamingTheField) {
       {R"({"render": {"max_depth": 65}})", "render.max_depth: must be an integer in [0, 64]"},
       {R"({"render": {"spp": 0}})", "render.spp: must be an integer in [1, 1000000]"},
       {R"({"render": {"seed": -1}})", "render.seed: must be an unsigned integer"},
+      {R"({"render": {"russian_roulette": 1}})", "render.russian_roulette: must be true or false"},
       {R"({"render": {"ambient": -0.1}})", "render.ambient: must be a finite number >= 0"},
   };
   for (const auto& [patch, message] : cases) EXPECT_EQ(error_of(patch), message) << patch;
