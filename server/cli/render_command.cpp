@@ -71,6 +71,7 @@ RenderArgs parse(int argc, char** argv) {
 int render_command(int argc, char** argv) {
   const RenderArgs args = parse(argc, argv);
   const BackendKind backend = parse_backend(args.backend);
+  check_output_format(args.output);
   Scene scene = load_scene_file(args.scene);
   if (args.width) scene.render.width = *args.width;
   if (args.height) scene.render.height = *args.height;

@@ -30,12 +30,17 @@ std::string lower_extension(const std::filesystem::path& path) {
 
 }  // namespace
 
-void write_image(const std::filesystem::path& path, const Image& image) {
+void check_output_format(const std::filesystem::path& path) {
   const std::string ext = lower_extension(path);
-  const bool linear = ext == ".exr";
-  if (!linear && ext != ".png" && ext != ".jpg" && ext != ".jpeg")
+  if (ext != ".exr" && ext != ".png" && ext != ".jpg" && ext != ".jpeg")
     throw std::runtime_error(path.string() + ": unsupported output format \"" + ext +
                              "\" (use .exr, .png or .jpg)");
+}
+
+void write_image(const std::filesystem::path& path, const Image& image) {
+  check_output_format(path);
+  const std::string ext = lower_extension(path);
+  const bool linear = ext == ".exr";
   auto out = OIIO::ImageOutput::create(path.string());
   if (!out) throw std::runtime_error(path.string() + ": " + OIIO::geterror());
 

@@ -7,6 +7,10 @@
 
 namespace geodesic {
 
+// Throws std::runtime_error unless the extension names a format write_image supports; lets
+// callers reject a bad output name before spending time on a render.
+void check_output_format(const std::filesystem::path& path);
+
 // The format follows the extension (.exr, .png, .jpg/.jpeg); throws std::runtime_error naming
 // the path and the reason on failure.
 void write_image(const std::filesystem::path& path, const Image& image);

@@ -97,8 +97,11 @@ std::string no_device_message(const std::vector<DeviceDescription>& devices,
       for (const auto& m : d.missing) msg += " " + m;
     }
   }
-  msg += "\nlavapipe gained ray tracing in Mesa 24.1: on Debian 12 install mesa-vulkan-drivers "
-         "from bookworm-backports (scripts/install-deps.sh does this)";
+  const bool any = std::any_of(devices.begin(), devices.end(),
+                               [](const DeviceDescription& d) { return d.can_ray_trace(); });
+  if (!any)
+    msg += "\nlavapipe gained ray tracing in Mesa 24.1: on Debian 12 install "
+           "mesa-vulkan-drivers from bookworm-backports (scripts/install-deps.sh does this)";
   return msg;
 }
 
