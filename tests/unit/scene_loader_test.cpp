@@ -406,7 +406,10 @@ class SceneFileTest : public ::testing::Test {
     std::ofstream(path_) << text;
     return path_;
   }
-  fs::path path_ = fs::temp_directory_path() / "geodesic_scene_loader_test.json";
+  // One file per test: ctest runs tests in parallel processes.
+  fs::path path_ = fs::temp_directory_path() /
+                   (std::string("geodesic_") +
+                    ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".json");
 };
 
 TEST_F(SceneFileTest, MissingFileNamesIt) {
