@@ -15,13 +15,14 @@ VkDeviceSize align_up(VkDeviceSize value, VkDeviceSize alignment) {
 }
 
 VkAccelerationStructureInstanceKHR instance_of(const AccelerationStructure& blas,
-                                               uint32_t custom_index) {
+                                               uint32_t custom_index, uint8_t mask,
+                                               uint32_t binding_table_offset) {
   VkAccelerationStructureInstanceKHR instance{};
   instance.transform.matrix[0][0] = instance.transform.matrix[1][1] =
       instance.transform.matrix[2][2] = 1.0f;
   instance.instanceCustomIndex = custom_index;
-  instance.mask = 0xFF;
-  instance.instanceShaderBindingTableRecordOffset = custom_index;
+  instance.mask = mask;
+  instance.instanceShaderBindingTableRecordOffset = binding_table_offset;
   instance.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR;
   instance.accelerationStructureReference = blas.address();
   return instance;
@@ -106,41 +107,45 @@ SceneAccelerationStructures SceneAccelerationStructures::build(VulkanContext& ct
                                                                const PackedScene& scene) {
   SceneAccelerationStructures out;
   std::vector<VkAccelerationStructureInstanceKHR> instances;
+  out.positions = GpuBuffer::from_vector(ctx, scene.positions, kBuildInput);
+  out.indices = GpuBuffer::from_vector(ctx, scene.indices, kBuildInput);
+  out.sphere_bounds = GpuBuffer::from_vector(ctx, scene.sphere_bounds, kBuildInput);
 
-  if (scene.triangle_count() > 0) {
-    out.positions = GpuBuffer::from_vector(ctx, scene.positions, kBuildInput);
-    out.indices = GpuBuffer::from_vector(ctx, scene.indices, kBuildInput);
-    VkAccelerationStructureGeometryKHR geometry{
-        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
-    geometry.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
-    geometry.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;
-    auto& tri = geometry.geometry.triangles;
-    tri.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
-    tri.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;
-    tri.vertexData.deviceAddress = out.positions.address();
-    tri.vertexStride = sizeof(float) * 4;
-    tri.maxVertex = static_cast<uint32_t>(scene.positions.size() - 1);
-    tri.indexType = VK_INDEX_TYPE_UINT32;
-    tri.indexData.deviceAddress = out.indices.address();
-    out.triangles = AccelerationStructure::build(
-        ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, geometry, scene.triangle_count());
-    instances.push_back(instance_of(out.triangles, 0));
-  }
-
-  if (!scene.spheres.empty()) {
-    out.sphere_bounds = GpuBuffer::from_vector(ctx, scene.sphere_bounds, kBuildInput);
-    VkAccelerationStructureGeometryKHR geometry{
-        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
-    geometry.geometryType = VK_GEOMETRY_TYPE_AABBS_KHR;
-    geometry.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;
-    auto& aabbs = geometry.geometry.aabbs;
-    aabbs.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_AABBS_DATA_KHR;
-    aabbs.data.deviceAddress = out.sphere_bounds.address();
-    aabbs.stride = sizeof(GpuAabb);
-    out.spheres = AccelerationStructure::build(
-        ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, geometry,
-        static_cast<uint32_t>(scene.spheres.size()));
-    instances.push_back(instance_of(out.spheres, 1));
+  for (uint32_t c = 0; c < scene.cell_geometry.size(); ++c) {
+    const CellGeometry& cell = scene.cell_geometry[c];
+    const uint8_t mask = uint8_t(1u << c);
+    if (cell.triangle_count > 0) {
+      VkAccelerationStructureGeometryKHR geometry{
+          VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
+      geometry.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
+      geometry.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;
+      auto& tri = geometry.geometry.triangles;
+      tri.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
+      tri.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;
+      tri.vertexData.deviceAddress = out.positions.address();
+      tri.vertexStride = sizeof(float) * 4;
+      tri.maxVertex = static_cast<uint32_t>(scene.positions.size() - 1);
+      tri.indexType = VK_INDEX_TYPE_UINT32;
+      tri.indexData.deviceAddress =
+          out.indices.address() + VkDeviceSize(cell.first_triangle) * 3 * sizeof(uint32_t);
+      out.bottom.push_back(AccelerationStructure::build(
+          ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, geometry, cell.triangle_count));
+      instances.push_back(instance_of(out.bottom.back(), cell.first_triangle, mask, 0));
+    }
+    if (cell.sphere_ref_count > 0) {
+      VkAccelerationStructureGeometryKHR geometry{
+          VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
+      geometry.geometryType = VK_GEOMETRY_TYPE_AABBS_KHR;
+      geometry.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;
+      auto& aabbs = geometry.geometry.aabbs;
+      aabbs.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_AABBS_DATA_KHR;
+      aabbs.data.deviceAddress =
+          out.sphere_bounds.address() + VkDeviceSize(cell.first_sphere_ref) * sizeof(GpuAabb);
+      aabbs.stride = sizeof(GpuAabb);
+      out.bottom.push_back(AccelerationStructure::build(
+          ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, geometry, cell.sphere_ref_count));
+      instances.push_back(instance_of(out.bottom.back(), cell.first_sphere_ref, mask, 1));
+    }
   }
 
   out.instances = GpuBuffer::from_vector(ctx, instances, kBuildInput);

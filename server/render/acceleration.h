@@ -1,10 +1,14 @@
-// Acceleration structures: one bottom level for all triangles, one for all sphere bounding
-// boxes, and a top level with an instance of each that exists. Instance custom index and
-// shader-binding-table offset tell the kinds apart (0 = triangles, 1 = spheres).
+// Acceleration structures: per cell of the chart atlas, one bottom level for its triangles and
+// one for its spheres' bounding boxes, all in the cell's chart; a top level with an instance
+// of each that exists. The instance mask is the cell's bit (rays trace one cell at a time),
+// the custom index the offset of the cell's first triangle or sphere ref, and the
+// shader-binding-table offset the kind (0 = triangles, 1 = spheres).
 #pragma once
 
 #include "render/gpu_buffer.h"
 #include "render/packed_scene.h"
+
+#include <vector>
 
 namespace geodesic {
 
@@ -38,8 +42,7 @@ struct SceneAccelerationStructures {
   GpuBuffer indices;
   GpuBuffer sphere_bounds;
   GpuBuffer instances;
-  AccelerationStructure triangles;
-  AccelerationStructure spheres;
+  std::vector<AccelerationStructure> bottom;
   AccelerationStructure top;
 
   static SceneAccelerationStructures build(VulkanContext& ctx, const PackedScene& scene);

@@ -17,8 +17,11 @@ struct FrameUniforms {
   uint32_t light_count;
   uint32_t seed;
   uint32_t russian_roulette;  // 0 or 1
+  uint32_t max_crossings;     // cell faces a ray may cross
+  uint32_t camera_cell;
+  uint32_t padding[2];
 };
-static_assert(sizeof(FrameUniforms) == 112, "must match the std140 layout of Frame");
+static_assert(sizeof(FrameUniforms) == 128, "must match the std140 layout of Frame");
 
 // Which samples one dispatch adds (push constants).
 struct SampleRange {

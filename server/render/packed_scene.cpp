@@ -1,48 +1,155 @@
 #include "render/packed_scene.h"
 
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "render/chart_bounds.h"
+
 namespace geodesic {
 namespace {
 
-std::array<float, 4> to_float4(const Vec3& v, double w = 0) {
-  return {static_cast<float>(v.x), static_cast<float>(v.y), static_cast<float>(v.z),
-          static_cast<float>(w)};
+Float4 to_float4(const Vec3& v, double w = 0) {
+  return {float(v.x), float(v.y), float(v.z), float(w)};
+}
+Float4 to_float4(const Vec4& v) { return {float(v.x), float(v.y), float(v.z), float(v.w)}; }
+
+// Cells with faces are bounded in their chart; the box around their faces' planes, padded so
+// that float rounding never clips geometry on the boundary. Cells without faces: everything.
+ChartBox cell_box(const Cell& cell) {
+  constexpr double kHuge = 1e30;
+  ChartBox box{{-kHuge, -kHuge, -kHuge}, {kHuge, kHuge, kHuge}};
+  // Axis-aligned faces (the tesseract atlas' cubes) bound the box directly.
+  for (const CellFace& f : cell.faces) {
+    const double pad = 1e-4 * (1 + std::abs(f.delta));
+    for (int i = 0; i < 3; ++i) {
+      if (std::abs(std::abs(f.normal[i]) - 1) > 1e-12) continue;
+      if (f.normal[i] > 0) (i == 0 ? box.hi.x : i == 1 ? box.hi.y : box.hi.z) = f.delta + pad;
+      else (i == 0 ? box.lo.x : i == 1 ? box.lo.y : box.lo.z) = -f.delta - pad;
+    }
+  }
+  return box;
+}
+
+void pack_cell_triangles(const Scene& scene, const Cell& cell, uint32_t cell_index,
+                         PackedScene& out) {
+  const GeometryKind k = scene.geometry;
+  const ChartBox box = cell_box(cell);
+  for (const TriangleMesh& mesh : scene.meshes) {
+    const bool smooth = k == GeometryKind::Euclidean && mesh.normals.size() == mesh.positions.size();
+    for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+      Vec3 chart[3];
+      bool in_front = true;  // all three vertices on the chart's side (w > 0)
+      for (int i = 0; i < 3; ++i) {
+        const Vec4 q = cell.chart_isometry * model::exp_origin(k, mesh.positions[mesh.indices[t + i]]);
+        in_front = in_front && q.w > 1e-6;
+        chart[i] = q.xyz() / q.w;
+      }
+      if (!in_front) continue;
+      ChartBox tri{chart[0], chart[0]};
+      for (const Vec3& x : chart) {
+        tri.lo = {std::min(tri.lo.x, x.x), std::min(tri.lo.y, x.y), std::min(tri.lo.z, x.z)};
+        tri.hi = {std::max(tri.hi.x, x.x), std::max(tri.hi.y, x.y), std::max(tri.hi.z, x.z)};
+      }
+      if (!intersect(tri, box)) continue;
+      const auto base = static_cast<uint32_t>(out.positions.size());
+      for (int i = 0; i < 3; ++i) {
+        out.positions.push_back(to_float4(chart[i], 1));
+        out.normals.push_back(smooth ? to_float4(mesh.normals[mesh.indices[t + i]]) : Float4{});
+        out.indices.push_back(base + i);
+      }
+      out.triangles.push_back({mesh.material, smooth ? 1u : 0u, cell_index, 0});
+    }
+  }
+}
+
+void pack_cell_spheres(const Scene& scene, const Cell& cell, uint32_t cell_index,
+                       PackedScene& out) {
+  const GeometryKind k = scene.geometry;
+  const ChartBox box = cell_box(cell);
+  for (uint32_t s = 0; s < scene.spheres.size(); ++s) {
+    const Sphere& sphere = scene.spheres[s];
+    const Vec4 centre = cell.chart_isometry * model::exp_origin(k, sphere.center);
+    if (k == GeometryKind::Spherical && !cell.faces.empty()) {
+      // Skip cells the ball cannot reach: the cube's corners are atan(sqrt 3) from its centre.
+      const double to_cell = std::acos(std::clamp(centre.w, -1.0, 1.0));
+      if (to_cell > sphere.radius + std::atan(std::sqrt(3.0)) + 1e-6) continue;
+    }
+    const auto bounds = sphere_chart_box(k, centre, sphere.radius);
+    const auto clipped = bounds ? intersect(*bounds, box) : std::optional<ChartBox>(box);
+    if (!clipped) continue;
+    // Pad outwards by a few float ulps of the coordinates so rounding never clips the sphere.
+    const auto pad = [](double x) { return 1e-6 * (1 + std::abs(x)); };
+    GpuAabb aabb{};
+    for (int i = 0; i < 3; ++i) {
+      aabb.min[i] = float(clipped->lo[i] - pad(clipped->lo[i]));
+      aabb.max[i] = float(clipped->hi[i] + pad(clipped->hi[i]));
+    }
+    out.sphere_refs.push_back({s, cell_index});
+    out.sphere_bounds.push_back(aabb);
+  }
+}
+
+// The cell the camera starts in: for a quotient, the camera is first carried into the
+// fundamental domain by the face pairings (as a walking camera would be).
+void place_camera(const Scene& scene, const std::vector<Cell>& cells, PackedScene& out) {
+  const GeometryKind k = scene.geometry;
+  Mat4 pose = scene.camera.pose;
+  if (cells.size() == 1) {
+    const Cell& cell = cells[0];
+    for (int step = 0; step < 64; ++step) {
+      const Vec3 x = model::chart(k, pose * model::origin());
+      const CellFace* outside = nullptr;
+      for (const CellFace& f : cell.faces)
+        if (dot(f.normal, x) > f.delta) outside = &f;
+      if (!outside) break;
+      pose = model::reorthonormalize(k, outside->pairing * pose);
+    }
+  } else {
+    double best = -2;
+    for (uint32_t c = 0; c < cells.size(); ++c) {
+      const double w = (cells[c].chart_isometry * (pose * model::origin())).w;
+      if (w > best) {
+        best = w;
+        out.camera_cell = c;
+      }
+    }
+  }
+  out.camera_pose = pose;
 }
 
 }  // namespace
 
 PackedScene pack_scene(const Scene& scene) {
+  const GeometryKind k = scene.geometry;
   PackedScene out;
   for (const Material& m : scene.materials)
     out.materials.push_back({to_float4(m.ambient), to_float4(m.diffuse),
                              to_float4(m.specular, m.shininess), to_float4(m.mirror),
                              to_float4(m.emission)});
-
-  for (const Sphere& s : scene.spheres) {
-    out.spheres.push_back({to_float4(s.center, s.radius), s.material, {0, 0, 0}});
-    // Pad the box by a relative epsilon so float rounding never clips the silhouette.
-    float r = static_cast<float>(s.radius * (1 + 1e-5));
-    GpuAabb box{};
-    for (int i = 0; i < 3; ++i) {
-      box.min[i] = static_cast<float>(s.center[i]) - r;
-      box.max[i] = static_cast<float>(s.center[i]) + r;
-    }
-    out.sphere_bounds.push_back(box);
-  }
-
+  for (const Sphere& s : scene.spheres)
+    out.spheres.push_back({to_float4(model::exp_origin(k, s.center)), float(s.radius), s.material, {0, 0}});
   for (const PointLight& l : scene.lights)
-    out.lights.push_back({to_float4(l.position, 1), to_float4(l.intensity)});
+    out.lights.push_back({to_float4(model::exp_origin(k, l.position)), to_float4(l.intensity)});
 
-  for (const TriangleMesh& mesh : scene.meshes) {
-    const auto base = static_cast<uint32_t>(out.positions.size());
-    const bool smooth = mesh.normals.size() == mesh.positions.size();
-    for (size_t i = 0; i < mesh.positions.size(); ++i) {
-      out.positions.push_back(to_float4(mesh.positions[i], 1));
-      out.normals.push_back(smooth ? to_float4(mesh.normals[i]) : std::array<float, 4>{});
-    }
-    for (uint32_t index : mesh.indices) out.indices.push_back(base + index);
-    for (size_t t = 0; t < mesh.indices.size() / 3; ++t)
-      out.triangles.push_back({mesh.material, smooth ? 1u : 0u});
+  const std::vector<Cell> cells = build_cells(scene);
+  for (uint32_t c = 0; c < cells.size(); ++c) {
+    const Cell& cell = cells[c];
+    out.cells.push_back({cell.chart_isometry.to_glsl(), uint32_t(cell.face_begin),
+                         uint32_t(cell.faces.size()), {0, 0}});
+    for (const CellFace& f : cell.faces)
+      out.faces.push_back({to_float4(f.normal, f.delta), f.pairing.to_glsl(),
+                           uint32_t(f.target_cell), uint32_t(f.partner), {0, 0}});
+    CellGeometry g;
+    g.first_triangle = uint32_t(out.triangles.size());
+    pack_cell_triangles(scene, cell, c, out);
+    g.triangle_count = uint32_t(out.triangles.size()) - g.first_triangle;
+    g.first_sphere_ref = uint32_t(out.sphere_refs.size());
+    pack_cell_spheres(scene, cell, c, out);
+    g.sphere_ref_count = uint32_t(out.sphere_refs.size()) - g.first_sphere_ref;
+    out.cell_geometry.push_back(g);
   }
+  place_camera(scene, cells, out);
   return out;
 }
 

@@ -1,37 +1,66 @@
 // The scene flattened into the arrays the shaders read (layouts match
-// shaders/common/scene_data.glsl, std430). Pure data: built and tested without a device.
+// shaders/common/scene_data.glsl, std430): model-space spheres and lights, and for every cell
+// of the chart atlas its triangles (in the cell's chart) and sphere bounding boxes. Pure data:
+// built and tested without a device.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <vector>
 
+#include "render/cells.h"
 #include "scene/scene.h"
 
 namespace geodesic {
 
+using Float4 = std::array<float, 4>;
+using Float16 = std::array<float, 16>;
+
 struct GpuMaterial {
-  std::array<float, 4> ambient;   // rgb
-  std::array<float, 4> diffuse;   // rgb
-  std::array<float, 4> specular;  // rgb, w = shininess k_e
-  std::array<float, 4> mirror;    // rgb
-  std::array<float, 4> emission;  // rgb
+  Float4 ambient;   // rgb
+  Float4 diffuse;   // rgb
+  Float4 specular;  // rgb, w = shininess k_e
+  Float4 mirror;    // rgb
+  Float4 emission;  // rgb
 };
 
 struct GpuSphere {
-  std::array<float, 4> center_radius;
+  Float4 center;  // model point
+  float radius;   // geodesic
   uint32_t material;
-  uint32_t padding[3];
+  uint32_t padding[2];
+};
+
+struct GpuSphereRef {
+  uint32_t sphere;
+  uint32_t cell;
 };
 
 struct GpuPointLight {
-  std::array<float, 4> position;
-  std::array<float, 4> intensity;
+  Float4 position;  // model point
+  Float4 intensity;
 };
 
 struct GpuTriangle {
   uint32_t material;
-  uint32_t smooth;  // 1 when the mesh supplies per-vertex normals
+  uint32_t smooth;  // 1 when the mesh supplies per-vertex normals (E3)
+  uint32_t cell;
+  uint32_t padding;
+};
+
+struct GpuCell {
+  Float16 chart_isometry;  // column-major
+  uint32_t face_begin;
+  uint32_t face_count;
+  uint32_t padding[2];
+};
+
+struct GpuCellFace {
+  Float4 plane;     // normal, delta
+  Float16 pairing;  // column-major
+  uint32_t target_cell;
+  uint32_t partner;
+  uint32_t padding[2];
 };
 
 struct GpuAabb {
@@ -39,17 +68,27 @@ struct GpuAabb {
   float max[3];
 };
 
+// One cell's share of the acceleration structures: ranges into the flat arrays below.
+struct CellGeometry {
+  uint32_t first_triangle = 0, triangle_count = 0;
+  uint32_t first_sphere_ref = 0, sphere_ref_count = 0;
+};
+
 struct PackedScene {
   std::vector<GpuMaterial> materials;
   std::vector<GpuSphere> spheres;
-  std::vector<GpuAabb> sphere_bounds;
   std::vector<GpuPointLight> lights;
-  std::vector<std::array<float, 4>> positions;  // all meshes' vertices, w = 1
-  std::vector<std::array<float, 4>> normals;    // one per position (zero when flat)
-  std::vector<uint32_t> indices;                // three per triangle, into positions
-  std::vector<GpuTriangle> triangles;
-
-  uint32_t triangle_count() const { return static_cast<uint32_t>(triangles.size()); }
+  std::vector<GpuCell> cells;
+  std::vector<GpuCellFace> faces;
+  std::vector<CellGeometry> cell_geometry;  // one per cell
+  std::vector<GpuSphereRef> sphere_refs;    // grouped by cell
+  std::vector<GpuAabb> sphere_bounds;       // one per sphere ref, in its cell's chart
+  std::vector<Float4> positions;            // chart coordinates of triangle vertices, w = 1
+  std::vector<Float4> normals;              // one per position (zero when flat)
+  std::vector<uint32_t> indices;            // three per triangle, into positions
+  std::vector<GpuTriangle> triangles;       // grouped by cell
+  uint32_t camera_cell = 0;
+  Mat4 camera_pose;                         // carried into its cell
 };
 
 PackedScene pack_scene(const Scene& scene);

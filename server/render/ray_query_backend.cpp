@@ -10,7 +10,7 @@ constexpr uint32_t kGroupSizeX = 8, kGroupSizeY = 8;  // ray_query.comp local_si
 class RayQueryBackend : public TraceBackend {
  public:
   RayQueryBackend(VulkanContext& ctx, SceneResources& res) : ctx_(ctx), res_(res) {
-    ShaderModule module(ctx.device(), "ray_query.comp");
+    ShaderModule module(ctx.device(), "ray_query.comp", res.geometry());
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;

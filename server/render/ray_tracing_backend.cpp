@@ -1,6 +1,6 @@
 // Back end 2: a VK_KHR_ray_tracing_pipeline pipeline. Ray generation runs the integrator; the
-// shader binding table holds one miss record per ray type and one hit group per primitive
-// kind (triangles; spheres with their intersection shader).
+// shader binding table holds one miss record and one hit group per primitive kind (triangles;
+// spheres with their intersection shader).
 #include <cstring>
 #include <vector>
 
@@ -40,17 +40,17 @@ class RayTracingBackend : public TraceBackend {
 
  private:
   // Shader groups, in shader-binding-table order.
-  enum Group : uint32_t { kRaygen, kMiss, kShadowMiss, kTriangleHit, kSphereHit, kGroupCount };
+  enum Group : uint32_t { kRaygen, kMiss, kTriangleHit, kSphereHit, kGroupCount };
 
   void create_pipeline() {
     VkDevice device = ctx_.device();
-    ShaderModule raygen(device, "raygen.rgen"), miss(device, "miss.rmiss"),
-        shadow(device, "shadow.rmiss"), triangle(device, "triangle.rchit"),
-        sphere_hit(device, "sphere.rchit"), sphere_int(device, "sphere.rint");
+    const GeometryKind g = res_.geometry();
+    ShaderModule raygen(device, "raygen.rgen", g), miss(device, "miss.rmiss", g),
+        triangle(device, "triangle.rchit", g), sphere_hit(device, "sphere.rchit", g),
+        sphere_int(device, "sphere.rint", g);
     const std::pair<VkShaderStageFlagBits, VkShaderModule> modules[] = {
         {VK_SHADER_STAGE_RAYGEN_BIT_KHR, raygen.handle()},
         {VK_SHADER_STAGE_MISS_BIT_KHR, miss.handle()},
-        {VK_SHADER_STAGE_MISS_BIT_KHR, shadow.handle()},
         {VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR, triangle.handle()},
         {VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR, sphere_hit.handle()},
         {VK_SHADER_STAGE_INTERSECTION_BIT_KHR, sphere_int.handle()}};
@@ -78,9 +78,8 @@ class RayTracingBackend : public TraceBackend {
     const VkRayTracingShaderGroupCreateInfoKHR groups[kGroupCount] = {
         group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 0, none, none),
         group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 1, none, none),
-        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 2, none, none),
-        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR, none, 3, none),
-        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, none, 4, 5)};
+        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR, none, 2, none),
+        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, none, 3, 4)};
 
     VkRayTracingPipelineCreateInfoKHR info{VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR};
     info.stageCount = static_cast<uint32_t>(stages.size());
@@ -105,9 +104,9 @@ class RayTracingBackend : public TraceBackend {
                                                 handles.size(), handles.data()),
              "vkGetRayTracingShaderGroupHandlesKHR");
 
-    // Regions: raygen | miss, shadow miss | triangle hit, sphere hit; each base-aligned.
+    // Regions: raygen | miss | triangle hit, sphere hit; each base-aligned.
     const VkDeviceSize raygen_size = align_up(stride, base);
-    const VkDeviceSize miss_size = align_up(2 * stride, base);
+    const VkDeviceSize miss_size = align_up(stride, base);
     const VkDeviceSize hit_size = align_up(2 * stride, base);
     table_ = GpuBuffer(ctx_, raygen_size + miss_size + hit_size + base,
                        VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR);
@@ -118,12 +117,11 @@ class RayTracingBackend : public TraceBackend {
     };
     copy(kRaygen, 0);
     copy(kMiss, raygen_size);
-    copy(kShadowMiss, raygen_size + stride);
     copy(kTriangleHit, raygen_size + miss_size);
     copy(kSphereHit, raygen_size + miss_size + stride);
 
     raygen_region_ = {start, raygen_size, raygen_size};
-    miss_region_ = {start + raygen_size, stride, 2 * stride};
+    miss_region_ = {start + raygen_size, stride, stride};
     hit_region_ = {start + raygen_size + miss_size, stride, 2 * stride};
   }
 

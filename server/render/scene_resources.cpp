@@ -12,12 +12,17 @@ constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
 // Binding numbers of shaders/common/scene_data.glsl.
 enum Binding : uint32_t {
   kScene = 0, kAccumulation, kFrame, kSpheres, kMaterials, kLights, kPositions, kNormals,
-  kIndices, kTriangles, kRayCounts, kBindingCount
+  kIndices, kTriangles, kRayCounts, kSphereRefs, kCells, kCellFaces, kDiagnostics,
+  kBindingCount
 };
 
-FrameUniforms make_uniforms(const Scene& scene) {
+FrameUniforms make_uniforms(const Scene& scene, const PackedScene& packed) {
   FrameUniforms u{};
-  u.camera_pose = scene.camera.pose.to_glsl();
+  u.camera_pose = packed.camera_pose.to_glsl();
+  u.camera_cell = packed.camera_cell;
+  u.max_crossings = static_cast<uint32_t>(scene.manifold.faces.empty() && packed.cells.size() == 1
+                                              ? 0
+                                              : scene.manifold.max_crossings);
   const Vec3& a = scene.render.ambient_light;
   u.ambient_light = {float(a.x), float(a.y), float(a.z), 0.0f};
   u.tan_half_fov_y =
@@ -35,7 +40,9 @@ FrameUniforms make_uniforms(const Scene& scene) {
 }  // namespace
 
 SceneResources::SceneResources(VulkanContext& ctx, const Scene& scene)
-    : ctx_(ctx), uniforms_(make_uniforms(scene)), packed_(pack_scene(scene)) {
+    : ctx_(ctx),
+      geometry_(scene.geometry),
+      packed_(pack_scene(scene)), uniforms_(make_uniforms(scene, packed_)) {
   structures_ = SceneAccelerationStructures::build(ctx, packed_);
   frame_ = GpuBuffer(ctx, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   std::memcpy(frame_.mapped(), &uniforms_, sizeof(uniforms_));
@@ -50,6 +57,11 @@ SceneResources::SceneResources(VulkanContext& ctx, const Scene& scene)
   normals_ = GpuBuffer::from_vector(ctx, packed_.normals, kStorage);
   indices_ = GpuBuffer::from_vector(ctx, packed_.indices, kStorage);
   triangles_ = GpuBuffer::from_vector(ctx, packed_.triangles, kStorage);
+  sphere_refs_ = GpuBuffer::from_vector(ctx, packed_.sphere_refs, kStorage);
+  cells_ = GpuBuffer::from_vector(ctx, packed_.cells, kStorage);
+  faces_ = GpuBuffer::from_vector(ctx, packed_.faces, kStorage);
+  diagnostics_ = GpuBuffer(ctx, sizeof(uint32_t), kStorage);
+  std::memset(diagnostics_.mapped(), 0, sizeof(uint32_t));
   create_descriptors();
 }
 
@@ -64,6 +76,10 @@ SceneResources::~SceneResources() {
 void SceneResources::clear_accumulation() {
   std::memset(accumulation_.mapped(), 0, accumulation_.size());
   std::memset(ray_counts_.mapped(), 0, ray_counts_.size());
+}
+
+uint32_t SceneResources::non_finite_samples() const {
+  return *static_cast<const uint32_t*>(diagnostics_.mapped());
 }
 
 uint64_t SceneResources::traced_rays() const {
@@ -122,7 +138,8 @@ void SceneResources::create_descriptors() {
   const GpuBuffer* buffers[kBindingCount] = {nullptr,     &accumulation_, &frame_,
                                              &spheres_,   &materials_,    &lights_,
                                              &positions_, &normals_,      &indices_,
-                                             &triangles_,   &ray_counts_};
+                                             &triangles_,   &ray_counts_,   &sphere_refs_,
+                                             &cells_,       &faces_,        &diagnostics_};
   VkDescriptorBufferInfo infos[kBindingCount]{};
   VkWriteDescriptorSet writes[kBindingCount]{};
   for (uint32_t i = 0; i < kBindingCount; ++i) {

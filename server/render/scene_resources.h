@@ -27,6 +27,7 @@ class SceneResources {
   VkDescriptorSet descriptor_set() const { return set_; }
   VkPipelineLayout pipeline_layout() const { return pipeline_layout_; }
   const FrameUniforms& uniforms() const { return uniforms_; }
+  GeometryKind geometry() const { return geometry_; }
   uint32_t width() const { return uniforms_.width; }
   uint32_t height() const { return uniforms_.height; }
 
@@ -35,16 +36,19 @@ class SceneResources {
   void clear_accumulation();
   // Rays traced since the last clear, summed over pixels.
   uint64_t traced_rays() const;
+  // Samples the integrator dropped for being NaN or infinite, since the scene was loaded.
+  uint32_t non_finite_samples() const;
 
  private:
   void create_descriptors();
 
   VulkanContext& ctx_;
-  FrameUniforms uniforms_{};
+  GeometryKind geometry_;
   PackedScene packed_;
+  FrameUniforms uniforms_{};
   SceneAccelerationStructures structures_;
   GpuBuffer frame_, accumulation_, spheres_, materials_, lights_, positions_, normals_,
-      indices_, triangles_, ray_counts_;
+      indices_, triangles_, ray_counts_, sphere_refs_, cells_, faces_, diagnostics_;
   VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
   VkDescriptorSet set_ = VK_NULL_HANDLE;

@@ -11,8 +11,9 @@ std::filesystem::path shader_directory() {
   return GEODESIC_SHADER_DIR;
 }
 
-ShaderModule::ShaderModule(VkDevice device, const std::string& name) : device_(device) {
-  const auto path = shader_directory() / (name + ".spv");
+ShaderModule::ShaderModule(VkDevice device, const std::string& entry, GeometryKind geometry)
+    : device_(device) {
+  const auto path = shader_directory() / (entry + "." + geometry_name(geometry) + ".spv");
   std::ifstream file(path, std::ios::binary | std::ios::ate);
   if (!file) throw VulkanError("cannot read shader " + path.string());
   std::vector<uint32_t> code(static_cast<size_t>(file.tellg()) / 4);

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <string>
 
+#include "geometry/model.h"
 #include "render/vulkan_context.h"
 
 namespace geodesic {
@@ -11,10 +12,11 @@ namespace geodesic {
 // The SPIR-V folder: $GEODESIC_SHADER_DIR if set, else the build tree's.
 std::filesystem::path shader_directory();
 
-// Owns a VkShaderModule loaded from shader_directory()/<name>.spv.
+// Owns a VkShaderModule loaded from shader_directory()/<entry>.<geometry>.spv: each entry
+// point is compiled once per model geometry.
 class ShaderModule {
  public:
-  ShaderModule(VkDevice device, const std::string& name);
+  ShaderModule(VkDevice device, const std::string& entry, GeometryKind geometry);
   ~ShaderModule();
   ShaderModule(const ShaderModule&) = delete;
   ShaderModule& operator=(const ShaderModule&) = delete;

@@ -1,5 +1,7 @@
 // The in-memory scene: what the loader produces and the renderer consumes. Everything is
-// already resolved (materials by index, polygons and meshes as world-space triangles).
+// resolved (materials by index, polygons and meshes as triangles). Positions are exponential
+// coordinates at the origin (the end of the geodesic from the origin along the vector, of
+// length |vector|: plain coordinates in E3); the renderer maps them into the model.
 #pragma once
 
 #include <cstdint>
@@ -8,11 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "geometry/model.h"
 #include "geometry/vec.h"
+#include "scene/manifold.h"
 
 namespace geodesic {
-
-enum class GeometryKind { Euclidean };
 
 // The paper's material coefficients (eq. 2.2) plus a perfect mirror and emission, RGB.
 struct Material {
@@ -26,8 +28,8 @@ struct Material {
 };
 
 struct Sphere {
-  Vec3 center;
-  double radius = 1;
+  Vec3 center;        // exponential coordinates
+  double radius = 1;  // geodesic
   uint32_t material = 0;
 };
 
@@ -46,8 +48,8 @@ struct PointLight {
 };
 
 struct Camera {
-  // Isometry taking the camera frame to the world: columns are right, up, back (the camera
-  // looks along -z of its frame) and the position (w = 1).
+  // Isometry of the model taking the camera frame at the origin to the camera: the images of
+  // the origin's right, up and back directions (the camera looks along -z) and of the origin.
   Mat4 pose = Mat4::identity();
   double fov_y_degrees = 45;
 };
@@ -67,6 +69,7 @@ struct RenderSettings {
 struct Scene {
   std::string name;
   GeometryKind geometry = GeometryKind::Euclidean;
+  Manifold manifold;  // no faces: the whole space
   Camera camera;
   std::vector<Material> materials;
   std::vector<Sphere> spheres;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "scene/json_path.h"
+#include "scene/manifold_loader.h"
 #include "scene/mesh_loader.h"
 
 namespace geodesic {
@@ -56,9 +57,12 @@ Mat4 read_rotation(const JsonNode& node) {
   return rotation_matrix(angle("yaw"), angle("pitch"), angle("roll"));
 }
 
-Camera read_camera(const JsonNode& node) {
+// The camera is an isometry: the transvection from the origin to its position, after a
+// rotation at the origin that turns -z to the view direction (transported back there).
+Camera read_camera(const JsonNode& node, GeometryKind kind) {
   node.expect_object({"position", "look_at", "up", "rotation", "fov_y"});
   const Vec3 position = read_vec3(node.at("position"));
+  const Mat4 to_position = model::translation(kind, position);
   const auto look_at = node.find("look_at");
   const auto up = node.find("up");
   const auto rotation = node.find("rotation");
@@ -67,9 +71,13 @@ Camera read_camera(const JsonNode& node) {
 
   Camera camera;
   if (look_at) {
-    const Vec3 view = read_vec3(*look_at) - position;
-    if (length(view) <= kDegenerate * std::max(1.0, length(position)))
+    const Vec3 target = read_vec3(*look_at);
+    if (length(target - position) <= kDegenerate * std::max(1.0, length(position)))
       look_at->fail("must differ from camera.position");
+    const Vec4 p = model::exp_origin(kind, position);
+    const Vec4 towards = model::geodesic_direction(kind, p, model::exp_origin(kind, target));
+    const Vec3 view = (model::translation_from(kind, p) * towards).xyz();
+    if (length(view) <= kDegenerate) look_at->fail("is the antipode of camera.position");
     const Vec3 up_hint = up ? read_vec3(*up) : Vec3(0, 1, 0);
     if (length(up_hint) == 0) up->fail("must be non-zero");
     const Vec3 forward = normalize(view);
@@ -77,10 +85,9 @@ Camera read_camera(const JsonNode& node) {
     if (length(side) <= kDegenerate)
       node.fail_field("up", "must not be parallel to the view direction");
     const Vec3 right = normalize(side);
-    camera.pose = frame(right, cross(right, forward), -forward, position);
+    camera.pose = to_position * frame(right, cross(right, forward), -forward, {});
   } else {
-    camera.pose = rotation ? read_rotation(*rotation) : Mat4::identity();
-    for (int r = 0; r < 3; ++r) camera.pose.m[r][3] = position[r];
+    camera.pose = to_position * (rotation ? read_rotation(*rotation) : Mat4::identity());
   }
   if (const auto fov = node.find("fov_y")) {
     camera.fov_y_degrees = read_number(*fov);
@@ -268,14 +275,25 @@ void read_object(const JsonNode& node, const MaterialTable& materials, const fs:
     node.expect_object({"type", "material", "min", "max", "rotation", "faces"});
   else if (type == "mesh")
     node.expect_object({"type", "material", "file", "position", "scale", "rotation"});
+  else if (type == "domain_edges")
+    node.expect_object({"type", "material", "radius"});
   else
     type_node.fail("unknown object type \"" + type +
-                   "\" (expected \"sphere\", \"quad\", \"polygon\", \"box\" or \"mesh\")");
+                   "\" (expected \"sphere\", \"quad\", \"polygon\", \"box\", \"mesh\" or \"domain_edges\")");
   const uint32_t material = materials.lookup(node.at("material"));
 
   if (type == "sphere") {
-    scene.spheres.push_back(
-        {read_vec3(node.at("center")), read_positive(node.at("radius")), material});
+    const double radius = read_positive(node.at("radius"));
+    if (scene.geometry == GeometryKind::Spherical && radius >= std::numbers::pi)
+      node.at("radius").fail("must be < pi in spherical space");
+    scene.spheres.push_back({read_vec3(node.at("center")), radius, material});
+    return;
+  }
+  if (type == "domain_edges") {
+    if (scene.manifold.faces.empty()) node.fail("\"domain_edges\" needs a manifold");
+    TriangleMesh tubes = make_edge_tubes(scene.geometry, scene.manifold.domain,
+                                         read_positive(node.at("radius")), material);
+    scene.meshes.push_back(std::move(tubes));
     return;
   }
   TriangleMesh mesh = type == "quad"      ? read_quad(node)
@@ -309,22 +327,13 @@ RenderSettings read_render(const JsonNode& node) {
   return render;
 }
 
-void check_geometry(const JsonNode& node) {
+GeometryKind read_geometry(const JsonNode& node) {
   const std::string geometry = read_string(node);
-  if (geometry == "hyperbolic" || geometry == "spherical")
-    node.fail("\"" + geometry + "\" is not supported yet (only \"euclidean\")");
-  if (geometry != "euclidean")
-    node.fail("unknown geometry \"" + geometry + "\" (expected \"euclidean\")");
-}
-
-// Quotient manifolds come later; today only the trivial one is accepted.
-void check_manifold(const JsonNode& node) {
-  if (node.value().is_null()) return;
-  if (!node.value().is_object()) node.fail("must be null or an object");
-  node.expect_object({"type"});
-  const JsonNode type = node.at("type");
-  if (read_string(type) != "none")
-    type.fail("quotient manifolds are not supported yet (only \"none\")");
+  for (GeometryKind kind :
+       {GeometryKind::Euclidean, GeometryKind::Hyperbolic, GeometryKind::Spherical})
+    if (geometry == geometry_name(kind)) return kind;
+  node.fail("unknown geometry \"" + geometry +
+            "\" (expected \"euclidean\", \"hyperbolic\" or \"spherical\")");
 }
 
 }  // namespace
@@ -335,9 +344,10 @@ Scene parse_scene(const Json& doc, const fs::path& base_dir) {
       {"name", "geometry", "manifold", "camera", "materials", "objects", "lights", "render"});
   Scene scene;
   if (const auto name = root.find("name")) scene.name = read_string(*name);
-  check_geometry(root.at("geometry"));
-  if (const auto manifold = root.find("manifold")) check_manifold(*manifold);
-  scene.camera = read_camera(root.at("camera"));
+  scene.geometry = read_geometry(root.at("geometry"));
+  if (const auto manifold = root.find("manifold"))
+    scene.manifold = read_manifold(*manifold, scene.geometry);
+  scene.camera = read_camera(root.at("camera"), scene.geometry);
 
   MaterialTable table;
   if (const auto materials = root.find("materials")) scene.materials = read_materials(*materials);

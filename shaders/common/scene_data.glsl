@@ -12,25 +12,50 @@ struct Material {
 };
 
 struct Sphere {
-  vec4 centerRadius;
+  vec4 center;  // model point
+  float radius;  // geodesic
   uint material;
-  uint pad0, pad1, pad2;
+  uint pad0, pad1;
+};
+
+// One sphere's bounding box in one cell's acceleration structure.
+struct SphereRef {
+  uint sphere;
+  uint cell;
 };
 
 struct PointLight {
-  vec4 position;
+  vec4 position;  // model point
   vec4 intensity;
 };
 
 struct TriangleInfo {
   uint material;
   uint smoothNormals;
+  uint cell;
+  uint pad;
+};
+
+// A cell of the chart atlas (server/render/cells.h).
+struct Cell {
+  mat4 chartIsometry;  // model -> the cell's frame
+  uint faceBegin;
+  uint faceCount;
+  uint pad0, pad1;
+};
+
+struct CellFace {
+  vec4 plane;    // xyz: outward unit normal in the cell's chart, w: offset (N . X = w)
+  mat4 pairing;  // applied to a ray leaving through the face
+  uint targetCell;
+  uint partner;  // the face entered through
+  uint pad0, pad1;
 };
 
 layout(set = 0, binding = 0) uniform accelerationStructureEXT uScene;
 layout(set = 0, binding = 1, std430) buffer Accumulation { vec4 accumulation[]; };
 layout(set = 0, binding = 2, std140) uniform Frame {
-  mat4 cameraPose;    // camera frame -> world isometry
+  mat4 cameraPose;    // camera frame -> model isometry
   vec4 ambientLight;  // L_a
   float tanHalfFovY;
   float aspect;
@@ -39,25 +64,33 @@ layout(set = 0, binding = 2, std140) uniform Frame {
   uint maxDepth;
   uint lightCount;
   uint seed;
-  uint russianRoulette;  // 0 or 1
+  uint russianRoulette;
+  uint maxCrossings;
+  uint cameraCell;
+  uint pad0, pad1;
 } frame;
 layout(set = 0, binding = 3, std430) readonly buffer Spheres { Sphere spheres[]; };
 layout(set = 0, binding = 4, std430) readonly buffer Materials { Material materials[]; };
 layout(set = 0, binding = 5, std430) readonly buffer Lights { PointLight lights[]; };
-layout(set = 0, binding = 6, std430) readonly buffer Positions { vec4 positions[]; };
-layout(set = 0, binding = 7, std430) readonly buffer Normals { vec4 normals[]; };
+layout(set = 0, binding = 6, std430) readonly buffer Positions { vec4 positions[]; };  // chart
+layout(set = 0, binding = 7, std430) readonly buffer Normals { vec4 normals[]; };      // E3
 layout(set = 0, binding = 8, std430) readonly buffer Indices { uint indices[]; };
 layout(set = 0, binding = 9, std430) readonly buffer Triangles { TriangleInfo triangles[]; };
-// Rays traced per pixel (camera, bounce and shadow rays), for rays/s figures.
+// Rays traced per pixel (camera, bounce and shadow segments), for rays/s figures.
 layout(set = 0, binding = 10, std430) buffer RayCounts { uint rayCounts[]; };
-
-// Rays traced by this invocation so far; the entry points' trace functions count into it.
-uint tracedRays = 0u;
+layout(set = 0, binding = 11, std430) readonly buffer SphereRefs { SphereRef sphereRefs[]; };
+layout(set = 0, binding = 12, std430) readonly buffer Cells { Cell cells[]; };
+layout(set = 0, binding = 13, std430) readonly buffer CellFaces { CellFace cellFaces[]; };
+// Samples dropped because they were NaN or infinite (tests require none).
+layout(set = 0, binding = 14, std430) buffer Diagnostics { uint nonFiniteSamples; };
 
 // Which samples this dispatch adds: [sampleStart, sampleStart + sampleCount).
 layout(push_constant) uniform Push {
   uint sampleStart;
   uint sampleCount;
 } push;
+
+// Rays traced by this invocation so far; the entry points' trace functions count into it.
+uint tracedRays = 0u;
 
 #endif

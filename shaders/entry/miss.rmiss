@@ -1,11 +1,10 @@
 #version 460
-// The ray left the scene. In E3 that is the end; quotient manifolds carry it across a face.
+// Nothing along this chart segment.
 #extension GL_EXT_ray_tracing : require
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/core.glsl"
-#include "entry/ray_tracing.glsl"
 
-layout(location = PAYLOAD_SURFACE) rayPayloadInEXT Surface surfacePayload;
+layout(location = 0) rayPayloadInEXT ChartHit payload;
 
-void main() { surfacePayload = noSurface(); }
+void main() { payload.kind = 0u; }

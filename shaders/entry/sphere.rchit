@@ -1,14 +1,14 @@
 #version 460
-// Closest hit on an analytic sphere: the surface record for shading.
+// Closest hit on a geodesic sphere: which one, and the arc length the intersection found.
 #extension GL_EXT_ray_tracing : require
 #extension GL_GOOGLE_include_directive : require
 
 #include "common/core.glsl"
-#include "entry/ray_tracing.glsl"
 
-layout(location = PAYLOAD_SURFACE) rayPayloadInEXT Surface surfacePayload;
+layout(location = 0) rayPayloadInEXT ChartHit payload;
+hitAttributeEXT float arcLength;
 
 void main() {
-  Ray ray = Ray(gl_WorldRayOriginEXT, gl_WorldRayDirectionEXT);
-  surfacePayload = sphereSurface(gl_PrimitiveID, ray, gl_HitTEXT);
+  uint sphere = sphereRefs[gl_InstanceCustomIndexEXT + gl_PrimitiveID].sphere;
+  payload = ChartHit(2u, sphere, gl_HitTEXT, arcLength, vec2(0.0));
 }

@@ -1,40 +1,65 @@
-// Euclidean E3: geodesics are straight lines and the metric is the dot product. Mirrors
-// server/geometry/euclidean.h. Curved models provide the same functions in their own file.
-#ifndef GEOMETRY_GLSL
-#define GEOMETRY_GLSL
+// Euclidean E3 in homogeneous coordinates: points (x, y, z, 1), tangents (x, y, z, 0),
+// geodesics straight lines. The float twin of the E3 branches of server/geometry/model.cpp;
+// include geometry/model.glsl, which picks a geometry and adds what the three share.
+#ifndef GEOMETRY_EUCLIDEAN_GLSL
+#define GEOMETRY_EUCLIDEAN_GLSL
 
-struct Ray {
-  vec3 origin;
-  vec3 direction;  // unit
-};
+const float GEOMETRY_CURVATURE = 0.0;
 
-vec3 geodesicPoint(Ray ray, float t) { return ray.origin + t * ray.direction; }
+float modelInner(vec4 a, vec4 b) { return dot(a.xyz, b.xyz); }
 
-float geodesicDistance(vec3 a, vec3 b) { return length(b - a); }
+// The part of v tangent at p.
+vec4 tangentPart(vec4 p, vec4 v) { return vec4(v.xyz, 0.0); }
 
-// Unit tangent at `from` of the geodesic towards `to`.
-vec3 geodesicDirection(vec3 from, vec3 to) { return normalize(to - from); }
+vec4 geodesicPoint(vec4 p, vec4 v, float t) { return p + t * v; }
+vec4 geodesicTangent(vec4 p, vec4 v, float t) { return v; }
+float geodesicDistance(vec4 a, vec4 b) { return length(b.xyz - a.xyz); }
 
-// The metric g_p(u, v) at p.
-float metricDot(vec3 p, vec3 u, vec3 v) { return dot(u, v); }
+mat4 translationTo(vec4 q) {
+  mat4 g = mat4(1.0);
+  g[3].xyz = q.xyz;
+  return g;
+}
 
-// Mirror reflection of direction d about the unit normal n (with the metric at p).
-vec3 reflectDirection(vec3 p, vec3 d, vec3 n) { return d - 2.0 * metricDot(p, d, n) * n; }
-
-// Camera ray through a direction given in the camera frame, moved by the camera isometry.
-Ray cameraRay(mat4 pose, vec3 directionInCamera) {
-  Ray r;
-  r.origin = (pose * vec4(0.0, 0.0, 0.0, 1.0)).xyz;
-  r.direction = normalize((pose * vec4(directionInCamera, 0.0)).xyz);
+// [R^T, -R^T x; 0, 1]
+mat4 inverseIsometry(mat4 g) {
+  mat3 rt = transpose(mat3(g));
+  mat4 r = mat4(rt);
+  r[3] = vec4(-(rt * g[3].xyz), 1.0);
   return r;
 }
 
-// A spawn point off the surface along its normal: a fixed 1e-4 plus 2^-15 of p's magnitude
-// (about 256 float ulps), so float round-off never lets a secondary ray hit the surface it
-// leaves, while small objects far from the origin are not stepped over.
-vec3 offsetFromSurface(vec3 p, vec3 n) {
-  float scale = 1e-4 + (1.0 / 32768.0) * max(abs(p.x), max(abs(p.y), abs(p.z)));
-  return p + scale * n;
+vec4 normalizePoint(vec4 p) { return vec4(p.xyz, 1.0); }
+
+float chartParameter(vec4 p, vec4 v, float t) { return t; }
+float distanceFromChartParameter(vec4 p, vec4 v, float s) { return s; }
+
+// Closest approach (Ray Tracing Gems ch. 7): the discriminant comes from the vector l, so it
+// stays accurate for far or grazing rays.
+float intersectGeodesicSphere(vec4 p, vec4 v, vec4 center, float radius, float tMin,
+                              float tMax) {
+  vec3 f = p.xyz - center.xyz;
+  float b = -dot(f, v.xyz);
+  vec3 l = f + b * v.xyz;  // from the centre to the line's closest point
+  float disc = radius * radius - dot(l, l);
+  if (disc < 0.0) return -1.0;
+  // sqrt(disc) takes b's sign so the sum never cancels; t0 t1 = |f|^2 - r^2.
+  float q = b + (b >= 0.0 ? 1.0 : -1.0) * sqrt(disc);
+  float t0 = q != 0.0 ? (dot(f, f) - radius * radius) / q : 0.0;
+  float t1 = q;
+  if (t0 > t1) {
+    float swap = t0;
+    t0 = t1;
+    t1 = swap;
+  }
+  if (t0 > tMin && t0 < tMax) return t0;
+  if (t1 > tMin && t1 < tMax) return t1;
+  return -1.0;
+}
+
+// 1e-4 plus 2^-15 of the largest |x|, |y|, |z| (256 ulps; w = 1 is exact).
+float surfaceOffsetLength(vec4 q) {
+  return 1e-4 + (1.0 / 32768.0) * max(abs(q.x), max(abs(q.y), abs(q.z)));
 }
 
 #endif

@@ -1,22 +1,24 @@
-// The paper's algorithms 2 and 3: a camera ray per sample, then at each hit emission, the
-// ambient term and direct light (eq. 2.2), and one Monte Carlo bounce, up to depth d.
-// The entry point defines traceSurface() and traceOccluded() before including this file.
+// The paper's algorithms 2 and 3: a camera geodesic per sample, then at each hit emission,
+// the ambient term and direct light (eq. 2.2), and one Monte Carlo bounce, up to depth d.
 #ifndef PATH_TRACER_GLSL
 #define PATH_TRACER_GLSL
 
-vec3 pathRadiance(Ray ray, inout uint rng) {
+vec3 pathRadiance(GeodesicRay ray, inout uint rng) {
   vec3 radiance = vec3(0.0);
   vec3 throughput = vec3(1.0);
   for (uint depth = 0u; depth <= frame.maxDepth; ++depth) {
-    Surface s = traceSurface(ray);
-    if (s.hit == 0u) break;  // nothing to see: the background is black
+    ChartHit hit;
+    if (!followGeodesic(ray, FAR, false, hit)) break;  // escaped: the background is black
+    Surface s = surfaceOf(ray, hit);
     Material m = materials[s.material];
-    vec3 wo = -ray.direction;
+    LocalFrame local = localFrameAt(s.position);
+    vec3 n = toLocal(local, s.normal), ng = toLocal(local, s.geometricNormal);
+    vec3 incoming = toLocal(local, s.incoming);
     radiance += throughput * (m.emission.rgb + m.ambient.rgb * frame.ambientLight.rgb +
-                              directIllumination(s, wo, m));
+                              directIllumination(s, local, n, ng, -incoming, m));
     if (depth == frame.maxDepth) break;
     vec3 direction, weight;
-    if (!sampleBounce(s, ray.direction, m, rng, direction, weight)) break;
+    if (!sampleBounce(n, ng, incoming, m, rng, direction, weight)) break;
     throughput *= weight;
     if (frame.russianRoulette != 0u && depth >= 1u) {
       // Survive with probability q and divide by it: unbiased, and dim paths end early.
@@ -24,17 +26,23 @@ vec3 pathRadiance(Ray ray, inout uint rng) {
       if (rngNext(rng) >= q) break;
       throughput /= q;
     }
-    ray = Ray(offsetFromSurface(s.position, s.geometricNormal), direction);
+    vec4 origin = offsetFromSurface(s.position, s.geometricNormal);
+    ray = GeodesicRay(origin, normalizeTangent(origin, fromLocal(local, direction)), s.cell, ~0u);
   }
   return radiance;
 }
 
-// One sample of pixel `pixel`: a jittered camera ray through the pinhole.
+// One sample of pixel `pixel`: a jittered camera geodesic through the pinhole.
 vec3 pixelSample(uvec2 pixel, inout uint rng) {
   vec2 jitter = vec2(rngNext(rng), rngNext(rng));
   vec2 ndc = 2.0 * (vec2(pixel) + jitter) / vec2(frame.width, frame.height) - 1.0;
-  vec3 dir = vec3(ndc.x * frame.tanHalfFovY * frame.aspect, -ndc.y * frame.tanHalfFovY, -1.0);
-  return pathRadiance(cameraRay(frame.cameraPose, dir), rng);
+  vec3 dir = normalize(vec3(ndc.x * frame.tanHalfFovY * frame.aspect, -ndc.y * frame.tanHalfFovY, -1.0));
+  GeodesicRay ray;
+  ray.p = frame.cameraPose * originPoint();
+  ray.v = frame.cameraPose * vec4(dir, 0.0);
+  ray.cell = frame.cameraCell;
+  ray.enteredFace = ~0u;
+  return pathRadiance(ray, rng);
 }
 
 // Adds push.sampleCount samples to the pixel's running sum (rgb) and count (a).
@@ -45,8 +53,11 @@ void accumulatePixel(uvec2 pixel) {
   for (uint i = 0u; i < push.sampleCount; ++i) {
     uint rng = rngSeed(index, push.sampleStart + i, frame.seed);
     vec3 value = pixelSample(pixel, rng);
-    // A NaN/Inf sample would poison the pixel forever: drop its value (never seen in tests).
-    if (!any(isnan(value)) && !any(isinf(value))) sum += value;
+    // A NaN/Inf sample would poison the pixel forever: drop its value, and count it.
+    if (any(isnan(value)) || any(isinf(value)))
+      atomicAdd(nonFiniteSamples, 1u);
+    else
+      sum += value;
   }
   accumulation[index] += vec4(sum, float(push.sampleCount));
   rayCounts[index] += tracedRays;

@@ -1,66 +1,72 @@
-// The surface record a closest hit produces: where the ray stopped, the normals facing the
-// incoming ray, and the material. Shared by closest-hit shaders and the ray-query kernel.
+// The surface record a closest hit produces, in the model: where the geodesic stopped, the
+// normals facing it, the direction it arrived in, and the material. Shared by both entry
+// points.
 #ifndef SURFACE_GLSL
 #define SURFACE_GLSL
 
 struct Surface {
-  vec3 position;
-  float t;
-  vec3 normal;          // shading normal, on the side the ray came from
+  vec4 position;         // model point q
+  vec4 normal;           // unit shading normal at q, on the side the ray came from
+  vec4 geometricNormal;  // unit face normal at q, same side
+  vec4 incoming;         // unit tangent of the arriving geodesic at q
   uint material;
-  vec3 geometricNormal;  // true face normal, same side
   uint hit;              // 0 when the ray escaped
+  uint cell;             // the cell the hit was found in
+  uint pad;
 };
 
 Surface noSurface() {
   Surface s;
-  s.position = vec3(0.0);
-  s.t = -1.0;
-  s.normal = vec3(0.0, 0.0, 1.0);
+  s.position = originPoint();
+  s.normal = s.geometricNormal = s.incoming = vec4(0.0, 0.0, 1.0, 0.0);
   s.material = 0u;
-  s.geometricNormal = vec3(0.0, 0.0, 1.0);
   s.hit = 0u;
+  s.cell = 0u;
   return s;
 }
 
-Surface facing(Surface s, vec3 rayDirection) {
-  if (dot(s.geometricNormal, rayDirection) > 0.0) s.geometricNormal = -s.geometricNormal;
-  if (dot(s.normal, s.geometricNormal) < 0.0) s.normal = -s.normal;
+Surface facing(Surface s) {
+  if (modelInner(s.geometricNormal, s.incoming) > 0.0) s.geometricNormal = -s.geometricNormal;
+  if (modelInner(s.normal, s.geometricNormal) < 0.0) s.normal = -s.normal;
   return s;
 }
 
-Surface triangleSurface(uint primitive, vec2 barycentrics, Ray ray, float t) {
-  uint i0 = indices[3u * primitive];
-  uint i1 = indices[3u * primitive + 1u];
-  uint i2 = indices[3u * primitive + 2u];
-  vec3 a = positions[i0].xyz, b = positions[i1].xyz, c = positions[i2].xyz;
-  float w = 1.0 - barycentrics.x - barycentrics.y;
+// The surface hit by `ray` (whose current segment produced `hit`).
+Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
   Surface s;
-  s.position = w * a + barycentrics.x * b + barycentrics.y * c;
-  s.t = t;
-  s.geometricNormal = normalize(cross(b - a, c - a));
-  s.normal = s.geometricNormal;
-  if (triangles[primitive].smoothNormals != 0u) {
-    vec3 n = w * normals[i0].xyz + barycentrics.x * normals[i1].xyz + barycentrics.y * normals[i2].xyz;
-    if (dot(n, n) > 0.0) s.normal = normalize(n);
+  s.hit = 1u;
+  s.cell = ray.cell;
+  if (hit.kind == 2u) {
+    Sphere sphere = spheres[hit.index];
+    s.position = normalizePoint(geodesicPoint(ray.p, ray.v, hit.t));
+    s.incoming = geodesicTangent(ray.p, ray.v, hit.t);
+    s.geometricNormal = sphereNormal(sphere.center, s.position);
+    s.normal = s.geometricNormal;
+    s.material = sphere.material;
+    return facing(s);
   }
-  s.material = triangles[primitive].material;
-  s.hit = 1u;
-  return facing(s, ray.direction);
-}
-
-Surface sphereSurface(uint primitive, Ray ray, float t) {
-  Sphere sphere = spheres[primitive];
-  Surface s;
-  s.t = t;
-  vec3 p = geodesicPoint(ray, t);
-  s.geometricNormal = normalize(p - sphere.centerRadius.xyz);
-  // Project onto the sphere: removes the error of the ray parameter from the position.
-  s.position = sphere.centerRadius.xyz + sphere.centerRadius.w * s.geometricNormal;
+  // Triangle: exact in the cell's chart (geodesic planes are flat there).
+  uint i0 = indices[3u * hit.index], i1 = indices[3u * hit.index + 1u],
+       i2 = indices[3u * hit.index + 2u];
+  vec3 a = positions[i0].xyz, b = positions[i1].xyz, c = positions[i2].xyz;
+  float w = 1.0 - hit.barycentrics.x - hit.barycentrics.y;
+  vec3 x = w * a + hit.barycentrics.x * b + hit.barycentrics.y * c;
+  mat4 toModel = transpose(cells[ray.cell].chartIsometry);  // signed permutations: P^-1 = P^T
+  vec3 planeNormal = normalize(cross(b - a, c - a));
+  vec4 qCell = liftChart(x);
+  s.position = toModel * qCell;
+  s.geometricNormal = toModel * chartPlaneNormal(qCell, planeNormal, dot(planeNormal, a));
   s.normal = s.geometricNormal;
-  s.material = sphere.material;
-  s.hit = 1u;
-  return facing(s, ray.direction);
+  TriangleInfo info = triangles[hit.index];
+  if (info.smoothNormals != 0u) {  // E3 meshes only: model tangents per vertex
+    vec4 n = w * normals[i0] + hit.barycentrics.x * normals[i1] + hit.barycentrics.y * normals[i2];
+    if (dot(n, n) > 0.0) s.normal = normalizeTangent(s.position, n);
+  }
+  mat4 P = cells[ray.cell].chartIsometry;
+  float t = distanceFromChartParameter(P * ray.p, P * ray.v, hit.s);
+  s.incoming = geodesicTangent(ray.p, ray.v, t);
+  s.material = info.material;
+  return facing(s);
 }
 
 #endif

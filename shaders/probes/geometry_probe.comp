@@ -1,43 +1,58 @@
 #version 460
-// Test probe: runs every geometry, sampling and random-number routine on a buffer of cases so
-// that tests/render/glsl_reference_test.cpp can hold the float GLSL against the double C++
-// twins in server/geometry/. One invocation per case; it computes all outputs.
+// Test probe: runs every model-geometry, sampling and random-number routine on a buffer of
+// cases, so that tests/render/ can hold the float GLSL against the double C++ twins in
+// server/geometry/. Compiled once per geometry like every entry point. One invocation per
+// case; it computes all outputs.
 #extension GL_GOOGLE_include_directive : require
 
 layout(local_size_x = 64) in;
 
 #include "common/random.glsl"
 #include "common/sampling.glsl"
-#include "geometry/euclidean.glsl"
-#include "primitives/sphere.glsl"
+#include "geometry/model.glsl"
 
-// Layouts mirror ProbeCase and ProbeResult in the test (std430).
+// Layouts mirror ProbeCase and ProbeResult in tests/render/geometry_probe.h (std430).
 struct ProbeCase {
-  mat4 pose;              // camera isometry
-  vec4 origin;            // ray origin; w: tMin
-  vec4 direction;         // unit ray direction; w: tMax
-  vec4 sphere;            // centre, radius
-  vec4 target;            // a second point; w: ray parameter for geodesicPoint
-  vec4 normal;            // unit normal
-  vec4 cameraDirection;   // direction in the camera frame
-  vec4 colour;            // linear RGB
-  vec4 uv;                // xy: two uniform numbers for sampleCosineHemisphere
-  uvec4 rng;              // pixel, sample index, seed, pcgHash input
+  mat4 isometry;   // for inverseIsometry
+  vec4 point;      // p, on the model
+  vec4 tangent;    // v, a unit tangent at p
+  vec4 target;     // q, a second point
+  vec4 sphere;     // centre c, on the model
+  vec4 loose;      // any 4-vector, for the normalisations
+  vec4 params;     // t, radius, tMin, tMax
+  vec4 plane;      // chart plane: unit normal, delta
+  vec4 chart;      // xyz: a chart point; w: a chart parameter s
+  vec4 normal;     // unit 3-vector for the sampling routines
+  vec4 colour;     // linear RGB
+  vec4 uv;         // xy: two uniform numbers for sampleCosineHemisphere
+  uvec4 rng;       // pixel, sample index, seed, pcgHash input
 };
 
 struct ProbeResult {
-  vec4 scalars;           // intersectSphere, geodesicDistance, metricDot, luminance
-  vec4 point;             // geodesicPoint(ray, target.w)
-  vec4 towards;           // geodesicDirection(origin, target)
-  vec4 reflected;         // reflectDirection(origin, direction, normal)
-  vec4 offset;            // offsetFromSurface(origin, normal)
-  vec4 cameraOrigin;      // cameraRay(pose, cameraDirection)
-  vec4 cameraDirection;
-  vec4 tangent;           // orthonormalBasis(normal)
-  vec4 bitangent;
-  vec4 cosineSample;      // sampleCosineHemisphere(normal, uv)
-  uvec4 hashes;           // pcgHash(rng.w), rngSeed(rng.xyz), the state after the draws
-  vec4 draws;             // four successive rngNext from that seed
+  vec4 scalars;            // intersectGeodesicSphere, geodesicDistance(p, q),
+                           // modelInner(v, loose), luminance
+  vec4 chartScalars;       // chartParameter(p, v, t), distanceFromChartParameter(p, v, s),
+                           // GEOMETRY_CURVATURE, surfaceOffsetLength(p)
+  vec4 origin;             // originPoint()
+  vec4 geodesic;           // geodesicPoint(p, v, t)
+  vec4 velocity;           // geodesicTangent(p, v, t)
+  vec4 towards;            // geodesicDirection(p, q)
+  mat4 translatedTo;       // translationTo(q)
+  mat4 translatedFrom;     // translationFrom(q)
+  mat4 inverse;            // inverseIsometry(isometry)
+  vec4 planeNormal;        // chartPlaneNormal(p, plane)
+  vec4 sphereNormal;       // sphereNormal(c, q)
+  vec4 normalizedPoint;    // normalizePoint(loose)
+  vec4 normalizedTangent;  // normalizeTangent(p, loose)
+  vec4 chartOfPoint;       // chartPoint(p)
+  vec4 lifted;             // liftChart(chart.xyz)
+  vec4 chartVelocity;      // chartDirection(p, v)
+  vec4 offset;             // offsetFromSurface(p, v)
+  vec4 basisTangent;       // orthonormalBasis(normal)
+  vec4 basisBitangent;
+  vec4 cosineSample;       // sampleCosineHemisphere(normal, uv)
+  uvec4 hashes;            // pcgHash(rng.w), rngSeed(rng.xyz), the state after the draws
+  vec4 draws;              // four successive rngNext from that seed
 };
 
 layout(std430, binding = 0) readonly buffer Cases { ProbeCase cases[]; };
@@ -48,26 +63,34 @@ void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= push.count) return;
   ProbeCase c = cases[i];
-  Ray ray = Ray(c.origin.xyz, c.direction.xyz);
+  vec4 p = c.point, v = c.tangent, q = c.target;
+  float t = c.params.x;
   ProbeResult r;
 
-  r.scalars = vec4(intersectSphere(ray.origin, ray.direction, c.sphere, c.origin.w, c.direction.w),
-                   geodesicDistance(c.origin.xyz, c.target.xyz),
-                   metricDot(c.origin.xyz, c.direction.xyz, c.normal.xyz),
-                   luminance(c.colour.rgb));
-  r.point = vec4(geodesicPoint(ray, c.target.w), 0.0);
-  r.towards = vec4(geodesicDirection(c.origin.xyz, c.target.xyz), 0.0);
-  r.reflected = vec4(reflectDirection(c.origin.xyz, c.direction.xyz, c.normal.xyz), 0.0);
-  r.offset = vec4(offsetFromSurface(c.origin.xyz, c.normal.xyz), 0.0);
+  r.scalars = vec4(intersectGeodesicSphere(p, v, c.sphere, c.params.y, c.params.z, c.params.w),
+                   geodesicDistance(p, q), modelInner(v, c.loose), luminance(c.colour.rgb));
+  r.chartScalars = vec4(chartParameter(p, v, t), distanceFromChartParameter(p, v, c.chart.w),
+                        GEOMETRY_CURVATURE, surfaceOffsetLength(p));
+  r.origin = originPoint();
+  r.geodesic = geodesicPoint(p, v, t);
+  r.velocity = geodesicTangent(p, v, t);
+  r.towards = geodesicDirection(p, q);
+  r.translatedTo = translationTo(q);
+  r.translatedFrom = translationFrom(q);
+  r.inverse = inverseIsometry(c.isometry);
+  r.planeNormal = chartPlaneNormal(p, c.plane.xyz, c.plane.w);
+  r.sphereNormal = sphereNormal(c.sphere, q);
+  r.normalizedPoint = normalizePoint(c.loose);
+  r.normalizedTangent = normalizeTangent(p, c.loose);
+  r.chartOfPoint = vec4(chartPoint(p), 0.0);
+  r.lifted = liftChart(c.chart.xyz);
+  r.chartVelocity = vec4(chartDirection(p, v), 0.0);
+  r.offset = offsetFromSurface(p, v);
 
-  Ray camera = cameraRay(c.pose, c.cameraDirection.xyz);
-  r.cameraOrigin = vec4(camera.origin, 0.0);
-  r.cameraDirection = vec4(camera.direction, 0.0);
-
-  vec3 t, b;
-  orthonormalBasis(c.normal.xyz, t, b);
-  r.tangent = vec4(t, 0.0);
-  r.bitangent = vec4(b, 0.0);
+  vec3 tb, bb;
+  orthonormalBasis(c.normal.xyz, tb, bb);
+  r.basisTangent = vec4(tb, 0.0);
+  r.basisBitangent = vec4(bb, 0.0);
   r.cosineSample = vec4(sampleCosineHemisphere(c.normal.xyz, c.uv.xy), 0.0);
 
   uint state = rngSeed(c.rng.x, c.rng.y, c.rng.z);

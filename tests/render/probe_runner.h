@@ -1,5 +1,6 @@
 // Runs a test probe: a compute shader reading an array of cases from binding 0 and writing one
-// result per case to binding 1, with the case count as its only push constant.
+// result per case to binding 1, with the case count as its only push constant. Probes are
+// compiled once per model geometry, like every entry point.
 #pragma once
 
 #include <algorithm>
@@ -18,7 +19,7 @@ class ProbeRunner {
  public:
   static constexpr uint32_t kGroupSize = 64;  // local_size_x of every probe shader
 
-  ProbeRunner(VulkanContext& ctx, const std::string& shader) : ctx_(ctx) {
+  ProbeRunner(VulkanContext& ctx, const std::string& shader, GeometryKind geometry) : ctx_(ctx) {
     VkDescriptorSetLayoutBinding bindings[2]{};
     for (uint32_t i = 0; i < 2; ++i) {
       bindings[i].binding = i;
@@ -41,7 +42,7 @@ class ProbeRunner {
     vk_check(vkCreatePipelineLayout(ctx.device(), &layout_info, nullptr, &layout_),
              "vkCreatePipelineLayout");
 
-    ShaderModule module(ctx.device(), shader);
+    ShaderModule module(ctx.device(), shader, geometry);
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;

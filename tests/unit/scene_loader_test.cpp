@@ -107,7 +107,9 @@ TEST(SceneLoader, EveryBundledSceneLoads) {
     Scene scene;
     EXPECT_NO_THROW(scene = load_scene_file(path));
     EXPECT_FALSE(scene.name.empty());
-    expect_orthonormal_pose(scene.camera.pose);
+    // The camera is an isometry of the scene's geometry.
+    EXPECT_LT(model::isometry_error(scene.geometry, scene.camera.pose), 1e-9);
+    if (scene.geometry == GeometryKind::Euclidean) expect_orthonormal_pose(scene.camera.pose);
   }
 }
 
@@ -276,13 +278,10 @@ TEST(SceneLoader, RejectsInvalidDocumentsNamingTheField) {
       {R"({"colour": 1})", R"((root): unknown field "colour")"},
       {R"({"name": 3})", "name: must be a string"},
       {R"({"geometry": null})", R"((root): missing required field "geometry")"},
-      {R"({"geometry": "hyperbolic"})",
-       R"(geometry: "hyperbolic" is not supported yet (only "euclidean"))"},
-      {R"({"geometry": "spherical"})",
-       R"(geometry: "spherical" is not supported yet (only "euclidean"))"},
-      {R"({"geometry": "flat"})", R"(geometry: unknown geometry "flat" (expected "euclidean"))"},
-      {R"({"manifold": {"type": "torus"}})",
-       R"(manifold.type: quotient manifolds are not supported yet (only "none"))"},
+      {R"({"geometry": "flat"})",
+       R"(geometry: unknown geometry "flat" (expected "euclidean", "hyperbolic" or "spherical"))"},
+      {R"({"manifold": {"type": "poincare-dodecahedral"}})",
+       R"(manifold.type: "poincare-dodecahedral" is a spherical manifold, but the scene's geometry is euclidean)"},
       {R"({"manifold": 3})", "manifold: must be null or an object"},
       {R"({"camera": {"position": null}})", R"(camera: missing required field "position")"},
       {R"({"camera": {"position": [0, 0]}})", "camera.position: must be an array of 3 numbers"},
@@ -346,7 +345,7 @@ TEST(SceneLoader, RejectsInvalidObjectsNamingTheField) {
       {R"({"material": "red"})", R"(objects[0]: missing required field "type")"},
       {R"({"type": "cone", "material": "red"})",
        R"(objects[0].type: unknown object type "cone" (expected "sphere", "quad", "polygon", )"
-       R"("box" or "mesh"))"},
+       R"("box", "mesh" or "domain_edges"))"},
       {sphere + R"("radius": 1, "colour": "red"})", R"(objects[0]: unknown field "colour")"},
       {sphere + R"("radius": -1})", "objects[0].radius: must be > 0"},
       {sphere + R"("radius": 2e6})", "objects[0].radius: must be <= 1e6"},

@@ -1,0 +1,89 @@
+#include "render/cells.h"
+
+#include <cmath>
+
+namespace geodesic {
+namespace {
+
+// The signed permutation carrying the axis `sign * e_axis` to e_w (an isometry of S3).
+Mat4 chart_isometry_for(int axis, int sign) {
+  Mat4 p;
+  for (int i = 0; i < 4; ++i) p.m[i][i] = 1;
+  if (axis != 3) {
+    p.m[axis][axis] = 0;
+    p.m[3][3] = 0;
+    p.m[3][axis] = sign;  // new w = sign * old axis coordinate
+    p.m[axis][3] = sign;  // and the old w takes the axis' place
+  } else if (sign < 0) {
+    for (int i = 0; i < 4; ++i) p.m[i][i] = -1;
+  }
+  return p;
+}
+
+// The model point a cell's chart is centred on: P^-1 e_w = P^T e_w.
+Vec4 centre_of(const Mat4& p) { return {p.m[3][0], p.m[3][1], p.m[3][2], p.m[3][3]}; }
+
+bool same(const Vec4& a, const Vec4& b) {
+  return std::abs(a.x - b.x) + std::abs(a.y - b.y) + std::abs(a.z - b.z) + std::abs(a.w - b.w) <
+         1e-9;
+}
+
+std::vector<Cell> tesseract_atlas() {
+  std::vector<Cell> cells;
+  for (int axis = 0; axis < 4; ++axis)
+    for (int sign : {1, -1}) cells.push_back({chart_isometry_for(axis, sign), 0, {}});
+  for (size_t c = 0; c < cells.size(); ++c) {
+    cells[c].face_begin = static_cast<int>(c * 6);
+    for (int i = 0; i < 3; ++i)
+      for (int sign : {1, -1}) {
+        Vec3 normal;
+        (i == 0 ? normal.x : i == 1 ? normal.y : normal.z) = sign;
+        cells[c].faces.push_back({normal, 1.0, Mat4::identity(), -1, -1});
+      }
+  }
+  // Past face (i, sign) of cell c lies the cell centred on P_c^T (sign e_i); it is entered
+  // through its face looking back at c's centre.
+  for (size_t c = 0; c < cells.size(); ++c)
+    for (size_t f = 0; f < 6; ++f) {
+      const Vec3 n = cells[c].faces[f].normal;
+      const Mat4& p = cells[c].chart_isometry;
+      // P^T (n, 0): column-vector product with the transpose.
+      const Vec4 beyond{p.m[0][0] * n.x + p.m[1][0] * n.y + p.m[2][0] * n.z,
+                        p.m[0][1] * n.x + p.m[1][1] * n.y + p.m[2][1] * n.z,
+                        p.m[0][2] * n.x + p.m[1][2] * n.y + p.m[2][2] * n.z,
+                        p.m[0][3] * n.x + p.m[1][3] * n.y + p.m[2][3] * n.z};
+      for (size_t t = 0; t < cells.size(); ++t) {
+        if (!same(centre_of(cells[t].chart_isometry), beyond)) continue;
+        const Vec4 back = cells[t].chart_isometry * centre_of(p);  // c's centre, in t's frame
+        for (size_t g = 0; g < 6; ++g) {
+          const Vec3 m = cells[t].faces[g].normal;
+          if (same({m.x, m.y, m.z, 0}, {back.x, back.y, back.z, 0})) {
+            cells[c].faces[f].target_cell = static_cast<int>(t);
+            cells[c].faces[f].partner = cells[t].face_begin + static_cast<int>(g);
+          }
+        }
+      }
+    }
+  return cells;
+}
+
+}  // namespace
+
+bool Cell::contains(const Vec3& x, double tolerance) const {
+  for (const CellFace& f : faces)
+    if (dot(f.normal, x) > f.delta + tolerance) return false;
+  return true;
+}
+
+std::vector<Cell> build_cells(const Scene& scene) {
+  if (!scene.manifold.faces.empty()) {
+    Cell cell{Mat4::identity(), 0, {}};
+    for (const DomainFace& f : scene.manifold.faces)
+      cell.faces.push_back({f.normal, f.delta, f.pairing, 0, f.partner});
+    return {cell};
+  }
+  if (scene.geometry == GeometryKind::Spherical) return tesseract_atlas();
+  return {Cell{Mat4::identity(), 0, {}}};
+}
+
+}  // namespace geodesic

@@ -1,0 +1,37 @@
+// The cells a ray is traced through: each cell is a convex region of one chart, with faces
+// where a ray leaves it and what happens there (algorithm 1 of the paper, generalised).
+//
+//   quotient M/Γ        one cell, the fundamental domain; faces carry the pairing isometries
+//   E3, H3 (no quotient) one cell without faces: the Klein chart of H3 is global
+//   S3 (no quotient)     eight cells, the cubes of the tesseract projected onto S3: each chart
+//                        is gnomonic about one of ±e_x, ±e_y, ±e_z, ±e_w and covers the cube
+//                        [-1, 1]^3; crossing a cube face changes chart, not the point.
+#pragma once
+
+#include <vector>
+
+#include "geometry/model.h"
+#include "scene/scene.h"
+
+namespace geodesic {
+
+struct CellFace {
+  Vec3 normal;       // outward unit normal in the cell's chart
+  double delta;      // the face is normal . X = delta
+  Mat4 pairing;      // model isometry applied to a ray leaving through this face
+  int target_cell;   // the cell the ray continues in
+  int partner;       // the face (global index) it enters through
+};
+
+struct Cell {
+  Mat4 chart_isometry;  // model -> this cell's frame; chart = (P p).xyz / (P p).w
+  int face_begin = 0;   // global index of the first face
+  std::vector<CellFace> faces;
+
+  // Whether the chart point x lies in the cell (within tolerance).
+  bool contains(const Vec3& x, double tolerance) const;
+};
+
+std::vector<Cell> build_cells(const Scene& scene);
+
+}  // namespace geodesic

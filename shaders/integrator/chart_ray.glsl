@@ -1,0 +1,36 @@
+// Rays as the model sees them (a point and unit tangent, in the model) and as the
+// acceleration structure sees them (a straight line in one cell's chart).
+#ifndef CHART_RAY_GLSL
+#define CHART_RAY_GLSL
+
+const float FAR = 1e30;
+
+struct GeodesicRay {
+  vec4 p;            // model point
+  vec4 v;            // unit tangent at p
+  uint cell;         // the cell whose chart traces it
+  uint enteredFace;  // face it entered the cell through (~0u: none), never an exit
+};
+
+// The closest hit along one chart segment. kind: 0 none, 1 triangle, 2 sphere.
+struct ChartHit {
+  uint kind;
+  uint index;       // global triangle or sphere index
+  float s;          // chart parameter along o + s d
+  float t;          // arc length (spheres; triangles fill it in later)
+  vec2 barycentrics;
+};
+
+ChartHit noChartHit() { return ChartHit(0u, 0u, FAR, FAR, vec2(0.0)); }
+
+// The model ray (p, v) of a chart line o + s d, with p on the model's w > 0 part: the
+// derivative of liftChart along d, made a unit tangent.
+void modelRayOfChartLine(vec3 o, vec3 d, out vec4 p, out vec4 v) {
+  p = liftChart(o);
+  float lambda2 = 1.0 + GEOMETRY_CURVATURE * dot(o, o);
+  vec4 dp = vec4(d, 0.0) / sqrt(lambda2) -
+            GEOMETRY_CURVATURE * vec4(o, 1.0) * dot(o, d) / (lambda2 * sqrt(lambda2));
+  v = normalizeTangent(p, dp);
+}
+
+#endif

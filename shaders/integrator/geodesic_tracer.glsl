@@ -1,0 +1,85 @@
+// The paper's algorithm 1, generalised to cells: trace a geodesic through the current cell's
+// chart; when it reaches a face of the cell without hitting anything, carry it across (the
+// face's pairing isometry, or a change of chart) and go on, up to frame.maxCrossings times.
+// Needs ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool any)
+// from the entry point.
+#ifndef GEODESIC_TRACER_GLSL
+#define GEODESIC_TRACER_GLSL
+
+const uint NO_FACE = ~0u;
+
+// The chart line of the ray in its cell: origin o, direction d, and the ray in the cell frame.
+struct ChartLine {
+  vec3 o;
+  vec3 d;
+  vec4 p;  // chartIsometry * ray.p
+  vec4 v;
+};
+
+ChartLine chartLineOf(GeodesicRay ray) {
+  mat4 P = cells[ray.cell].chartIsometry;
+  ChartLine line;
+  line.p = P * ray.p;
+  line.v = P * ray.v;
+  line.o = chartPoint(line.p);
+  line.d = chartDirection(line.p, line.v);
+  return line;
+}
+
+// Where the chart line leaves its convex cell: the smallest chart parameter over the faces it
+// moves towards (NO_FACE and FAR for a cell without faces).
+uint exitFace(GeodesicRay ray, ChartLine line, out float sExit) {
+  sExit = FAR;
+  uint face = NO_FACE;
+  Cell cell = cells[ray.cell];
+  for (uint i = 0u; i < cell.faceCount; ++i) {
+    uint f = cell.faceBegin + i;
+    if (f == ray.enteredFace) continue;
+    vec4 plane = cellFaces[f].plane;
+    float towards = dot(plane.xyz, line.d);
+    if (towards <= 0.0) continue;
+    float s = max(0.0, (plane.w - dot(plane.xyz, line.o)) / towards);
+    if (s < sExit) {
+      sExit = s;
+      face = f;
+    }
+  }
+  return face;
+}
+
+// Carries the ray across `face` after arc length t: the point and tangent there, mapped by
+// the face's pairing and re-normalised onto the model (float isometries drift otherwise).
+GeodesicRay crossFace(GeodesicRay ray, uint face, float t) {
+  CellFace f = cellFaces[face];
+  vec4 q = f.pairing * geodesicPoint(ray.p, ray.v, t);
+  vec4 u = f.pairing * geodesicTangent(ray.p, ray.v, t);
+  GeodesicRay next;
+  next.p = normalizePoint(q);
+  next.v = normalizeTangent(next.p, u);
+  next.cell = f.targetCell;
+  next.enteredFace = f.partner;
+  return next;
+}
+
+// Follows the geodesic until it hits something within arc length maxDistance. On a hit, `ray`
+// is the segment that hit (its cell and start) and hit.t the arc length along it.
+bool followGeodesic(inout GeodesicRay ray, float maxDistance, bool anyHit, out ChartHit hit) {
+  float travelled = 0.0;
+  for (uint crossing = 0u; crossing <= frame.maxCrossings; ++crossing) {
+    ChartLine line = chartLineOf(ray);
+    float sExit;
+    uint face = exitFace(ray, line, sExit);
+    float tExit = face == NO_FACE ? FAR : distanceFromChartParameter(line.p, line.v, sExit);
+    float remaining = maxDistance - travelled;
+    bool last = face == NO_FACE || remaining <= tExit;
+    float sMax = remaining < tExit ? chartParameter(line.p, line.v, remaining) : sExit;
+    hit = traceChart(line.o, line.d, sMax, ray.cell, line.p, line.v, anyHit);
+    if (hit.kind != 0u) return true;
+    if (last) return false;
+    travelled += tExit;
+    ray = crossFace(ray, face, tExit);
+  }
+  return false;
+}
+
+#endif

@@ -1,0 +1,19 @@
+// Confirms a sphere whose bounding box a chart ray entered: the intersection is solved in the
+// model (exact for geodesic spheres in every geometry) and mapped back to the chart parameter
+// the acceleration structure orders hits by.
+#ifndef SPHERE_CANDIDATE_GLSL
+#define SPHERE_CANDIDATE_GLSL
+
+// (p, v): the ray in the cell's frame. On success s in [sMin, sMax] and t is the arc length.
+bool sphereCandidate(SphereRef ref, vec4 p, vec4 v, float sMin, float sMax, out float s,
+                     out float t) {
+  Sphere sphere = spheres[ref.sphere];
+  vec4 center = cells[ref.cell].chartIsometry * sphere.center;
+  float tMax = sMax >= FAR ? FAR : distanceFromChartParameter(p, v, sMax);
+  t = intersectGeodesicSphere(p, v, center, sphere.radius, 0.0, tMax);
+  if (t <= 0.0) return false;
+  s = chartParameter(p, v, t);
+  return s >= sMin && s <= sMax;
+}
+
+#endif
