@@ -336,6 +336,45 @@ GeometryKind read_geometry(const JsonNode& node) {
             "\" (expected \"euclidean\", \"hyperbolic\" or \"spherical\")");
 }
 
+// Signed geodesic distance from the model point q to a face plane (positive outside).
+double distance_outside(GeometryKind kind, const Vec4& q, const DomainFace& face) {
+  const double n_x = dot(face.normal, q.xyz());
+  switch (kind) {
+    case GeometryKind::Hyperbolic:
+      return std::asinh((n_x - face.delta * q.w) / std::sqrt(1 - face.delta * face.delta));
+    case GeometryKind::Spherical:
+      return std::asin(std::clamp((n_x - face.delta * q.w) / std::sqrt(1 + face.delta * face.delta),
+                                  -1.0, 1.0));
+    default:
+      return n_x - face.delta;
+  }
+}
+
+// Scene objects live in the fundamental domain: the part of an object outside it would never
+// be seen (rays only ever travel inside the domain). Edge tubes straddle faces on purpose.
+void check_inside_domain(const JsonNode& objects, const Scene& scene,
+                         const std::vector<int>& object_of_sphere,
+                         const std::vector<int>& object_of_mesh) {
+  const GeometryKind k = scene.geometry;
+  constexpr double kSlack = 1e-9;
+  for (size_t i = 0; i < scene.spheres.size(); ++i) {
+    const Vec4 c = model::exp_origin(k, scene.spheres[i].center);
+    for (size_t f = 0; f < scene.manifold.faces.size(); ++f)
+      if (distance_outside(k, c, scene.manifold.faces[f]) + scene.spheres[i].radius > kSlack)
+        objects[object_of_sphere[i]].fail("must lie inside the fundamental domain (it crosses face " +
+                                          std::to_string(f) + ")");
+  }
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    if (object_of_mesh[m] < 0) continue;
+    for (const Vec3& x : scene.meshes[m].positions)
+      for (size_t f = 0; f < scene.manifold.faces.size(); ++f)
+        if (distance_outside(k, model::exp_origin(k, x), scene.manifold.faces[f]) > 1e-6)
+          objects[object_of_mesh[m]].fail(
+              "must lie inside the fundamental domain (a vertex is beyond face " +
+              std::to_string(f) + ")");
+  }
+}
+
 }  // namespace
 
 Scene parse_scene(const Json& doc, const fs::path& base_dir) {
@@ -355,7 +394,15 @@ Scene parse_scene(const Json& doc, const fs::path& base_dir) {
 
   if (const auto objects = root.find("objects")) {
     const std::size_t n = objects->expect_array(0, "an array of objects");
-    for (std::size_t i = 0; i < n; ++i) read_object((*objects)[i], table, base_dir, scene);
+    std::vector<int> object_of_sphere, object_of_mesh;
+    for (std::size_t i = 0; i < n; ++i) {
+      read_object((*objects)[i], table, base_dir, scene);
+      const bool tubes = read_string((*objects)[i].at("type")) == "domain_edges";
+      object_of_sphere.resize(scene.spheres.size(), int(i));
+      object_of_mesh.resize(scene.meshes.size(), tubes ? -1 : int(i));
+    }
+    if (!scene.manifold.faces.empty())
+      check_inside_domain(*objects, scene, object_of_sphere, object_of_mesh);
   }
   if (const auto lights = root.find("lights")) {
     const std::size_t n = lights->expect_array(0, "an array of lights");

@@ -115,7 +115,11 @@ Values input_sensitivity(const F& f, const Values& x) {
     moved[j] = x[j] * (1 - kStep);
     const Values down = f(moved);
     moved[j] = x[j];
-    for (size_t i = 0; i < s.size(); ++i) s[i] += std::abs(up[i] - down[i]) / (2 * kStep);
+    // Undefined once an input moves by 1e-7: as ill-conditioned as can be.
+    for (size_t i = 0; i < s.size(); ++i) {
+      const double change = std::abs(up[i] - down[i]) / (2 * kStep);
+      s[i] += std::isfinite(change) ? change : INFINITY;
+    }
   }
   return s;
 }

@@ -134,3 +134,64 @@ TEST(CurvedSpaces, NoBundledSceneProducesNonFiniteSamplesAtDepth64) {
 
 }  // namespace
 }  // namespace geodesic::test
+
+namespace geodesic::test {
+namespace {
+
+// Seams: rays straight through a face centre, an edge and a vertex of the domain. Each wall of
+// the mirrored right-angled dodecahedron is a mirror, so a face, an edge (two perpendicular
+// mirrors) and a vertex (three: a corner reflector) all send the ray straight back: a marker
+// behind the camera must fill the centre pixel, with nothing leaking through the seam.
+TEST(Seams, RaysThroughFacesEdgesAndVerticesOfTheMirroredDodecahedronComeStraightBack) {
+  const Manifold manifold = make_mirrored_dodecahedron();
+  const Polyhedron& domain = manifold.domain;
+  const auto& edge = domain.edges.at(0);
+  const Vec3 targets[] = {manifold.faces[0].normal * manifold.faces[0].delta,
+                          (domain.vertices[edge[0]] + domain.vertices[edge[1]]) / 2,
+                          domain.vertices.at(0)};
+  const char* names[] = {"face", "edge", "vertex"};
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 view = normalize(targets[i]);
+    const Scene scene =
+        marker_scene(GeometryKind::Hyperbolic, manifold, view * -0.4, 0.05, view, 2.0, 9);
+    Renderer renderer(device(), scene);
+    renderer.add_samples(1);
+    const Image image = renderer.image();
+    EXPECT_NEAR(image.at(4, 4, 0), 1.0, 1e-3) << names[i];
+    EXPECT_EQ(renderer.non_finite_samples(), 0u) << names[i];
+  }
+}
+
+// In the 3-torus a ray through a corner of the cube continues into the diagonal copy, and a
+// ray lying in a face plane slides along it to the next face.
+TEST(Seams, TorusRaysThroughACornerAndAlongAFace) {
+  const double h = 1.5;
+  const Manifold torus = make_torus(GeometryKind::Euclidean, h);
+  const Vec3 diagonal = normalize(Vec3(1, 1, 1));
+  Scene corner = marker_scene(GeometryKind::Euclidean, torus, diagonal * -0.5, 0.1, diagonal, 2, 9);
+  EXPECT_NEAR(render(corner, 1).at(4, 4, 0), 1.0, 1e-3) << "corner";
+
+  // Starting on the face z = h and skimming down: 2.25 along x, 0.0675 down to the marker.
+  Scene along = marker_scene(GeometryKind::Euclidean, torus, {-0.75, 0, h - 0.0675}, 0.05,
+                             normalize(Vec3(1, 0, -0.03)), 0.5, 9);
+  for (int r = 0; r < 3; ++r) along.camera.pose.m[r][3] = r == 2 ? h : 0;  // on the face z = h
+  Renderer renderer(device(), along);
+  renderer.add_samples(1);
+  EXPECT_NEAR(renderer.image().at(4, 4, 0), 1.0, 1e-3) << "along the face";
+  EXPECT_EQ(renderer.non_finite_samples(), 0u);
+}
+
+// A camera placed outside the domain is carried in by the face pairings, as a walking camera
+// is: the image equals the one taken from the equivalent point inside.
+TEST(Seams, CameraOutsideTheDomainIsCarriedBackIn) {
+  const Manifold torus = make_torus(GeometryKind::Euclidean, 1.5);
+  Scene inside = marker_scene(GeometryKind::Euclidean, torus, {0.5, 0.2, -0.6}, 0.3,
+                              normalize(Vec3(0.3, 0.1, -1)), 60, 24);
+  Scene outside = inside;
+  for (int r = 0; r < 3; ++r) inside.camera.pose.m[r][3] = Vec3(-0.8, 0.3, 0.4)[r];
+  for (int r = 0; r < 3; ++r) outside.camera.pose.m[r][3] = Vec3(-0.8 + 3 * 3, 0.3 - 3, 0.4)[r];
+  EXPECT_LT(rms_difference(render(inside, 1), render(outside, 1)), 1e-4);
+}
+
+}  // namespace
+}  // namespace geodesic::test

@@ -489,3 +489,35 @@ TEST(SceneSchema, DeclaresEveryFieldTheBundledScenesUse) {
 
 }  // namespace
 }  // namespace geodesic
+
+namespace geodesic {
+namespace {
+
+TEST(SceneLoader, ObjectsMustLieInsideTheFundamentalDomain) {
+  const auto doc = [](const std::string& object) {
+    return nlohmann::ordered_json::parse(R"({"geometry": "euclidean",
+      "manifold": {"type": "torus", "size": 2},
+      "camera": {"position": [0, 0, 0]},
+      "materials": {"m": {"diffuse": 0.5}},
+      "objects": [{"type": "sphere", "material": "m", "center": [0, 0, 0], "radius": 0.5}, )" +
+                                         object + "]}");
+  };
+  EXPECT_NO_THROW(parse_scene(doc(R"({"type": "sphere", "material": "m", "center": [0.4, 0, 0], "radius": 0.5})"), "."));
+  try {
+    parse_scene(doc(R"({"type": "sphere", "material": "m", "center": [0.6, 0, 0], "radius": 0.5})"), ".");
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "objects[1]: must lie inside the fundamental domain (it crosses face 0)");
+  }
+  try {
+    parse_scene(doc(R"({"type": "quad", "material": "m", "corner": [0, 0, 0], "edge_u": [2, 0, 0], "edge_v": [0, 0.5, 0]})"), ".");
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "objects[1]: must lie inside the fundamental domain (a vertex is beyond face 0)");
+  }
+}
+
+}  // namespace
+}  // namespace geodesic
