@@ -2,6 +2,9 @@
 // depth 5): paths/s and rays/s for each tracing back end the device offers, measured in the
 // same run, with their ratio.
 //   geodesic_bench [SCENE.json] [--spp N] [--device SEL] [--repeat R] [--russian-roulette]
+//                  [--geometry euclidean|hyperbolic|spherical]
+// --geometry renders the same scene document in another model geometry (its coordinates read
+// as exponential coordinates there): the cost of curvature on a comparable scene.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -48,20 +51,26 @@ int main(int argc, char** argv) {
   uint32_t spp = 16;
   int repeat = 3;
   bool russian_roulette = false;
+  std::string geometry;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--spp" && i + 1 < argc) spp = std::stoul(argv[++i]);
     else if (a == "--device" && i + 1 < argc) device = argv[++i];
     else if (a == "--repeat" && i + 1 < argc) repeat = std::stoi(argv[++i]);
     else if (a == "--russian-roulette") russian_roulette = true;
+    else if (a == "--geometry" && i + 1 < argc) geometry = argv[++i];
     else scene_path = a;
   }
   try {
     Scene scene = load_scene_file(scene_path);
     scene.render.russian_roulette = scene.render.russian_roulette || russian_roulette;
+    for (GeometryKind kind :
+         {GeometryKind::Euclidean, GeometryKind::Hyperbolic, GeometryKind::Spherical})
+      if (geometry == geometry_name(kind)) scene.geometry = kind;
     VulkanContext ctx(device);
-    std::printf("scene %s, %dx%d, depth %d%s, %u spp per run, best of %d, device %s\n",
-                scene_path.c_str(), scene.render.width, scene.render.height,
+    std::printf("scene %s (%s), %dx%d, depth %d%s, %u spp per run, best of %d, device %s\n",
+                scene_path.c_str(), geometry_name(scene.geometry), scene.render.width,
+                scene.render.height,
                 scene.render.max_depth,
                 scene.render.russian_roulette ? " with Russian roulette" : "", spp, repeat,
                 ctx.description().name.c_str());

@@ -105,9 +105,10 @@ Vec3 log_origin(GeometryKind k, const Vec4& p) {
 Mat4 translation_to(GeometryKind k, const Vec4& q) {
   const Vec3 x = q.xyz();
   const double kk = curvature(k);
-  // x x^T / (1 + w) = (1 - K w) x^ x^T on the model: the first form cancels near S3's
-  // antipode (w -> -1), the second near the origin. At the antipode itself no transvection
-  // is singled out; x^ = e_x gives the half-turn in the xw plane.
+  // [I - K x x^T / (1 + w), x; -K x^T, w] (E3: w = 1). On S3 x x^T / (1 + w) equals
+  // (1 - w) x^ x^T: the first form cancels near the antipode (w -> -1), the second near the
+  // origin. At the antipode itself no rotation is singled out; x^ = e_x gives the half-turn in
+  // the xw plane.
   Vec3 axis = x;
   double scale = 1 / (1 + q.w);
   if (k == GeometryKind::Spherical && q.w < 0) {

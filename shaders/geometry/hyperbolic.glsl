@@ -19,15 +19,15 @@ float sinhStable(float x) {
 float tanhStable(float x) { return abs(x) < 0.5 ? sinhStable(x) / cosh(x) : tanh(x); }
 float asinhStable(float x) {
   float x2 = x * x;
-  return abs(x) < 0.25
-             ? x * (1.0 - x2 * (1.0 / 6.0 - x2 * (3.0 / 40.0 - x2 * (5.0 / 112.0 - x2 * (35.0 / 1152.0)))))
-             : asinh(x);
+  float series =
+      1.0 - x2 * (1.0 / 6.0 - x2 * (3.0 / 40.0 - x2 * (5.0 / 112.0 - x2 * (35.0 / 1152.0))));
+  return abs(x) < 0.25 ? x * series : asinh(x);
 }
 float atanhStable(float x) {
   float x2 = x * x;
-  return abs(x) < 0.25
-             ? x * (1.0 + x2 * (1.0 / 3.0 + x2 * (1.0 / 5.0 + x2 * (1.0 / 7.0 + x2 * (1.0 / 9.0 + x2 / 11.0)))))
-             : atanh(x);
+  float series =
+      1.0 + x2 * (1.0 / 3.0 + x2 * (1.0 / 5.0 + x2 * (1.0 / 7.0 + x2 * (1.0 / 9.0 + x2 / 11.0))));
+  return abs(x) < 0.25 ? x * series : atanh(x);
 }
 
 // The part of v tangent at p.

@@ -18,7 +18,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <string>
+#include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -87,20 +90,36 @@ Values values(const T&... parts) {
 class Unpack {
  public:
   explicit Unpack(const Values& x) : x_(x) {}
-  double scalar() { return x_[i_++]; }
-  Vec3 vec3() { return {scalar(), scalar(), scalar()}; }
-  Vec4 vec4() { return {scalar(), scalar(), scalar(), scalar()}; }
-  Mat4 mat4() {
-    Mat4 g;
-    for (auto& row : g.m)
-      for (double& e : row) e = scalar();
-    return g;
+  template <typename T>
+  T get() {
+    if constexpr (std::is_same_v<T, double>) {
+      return x_[i_++];
+    } else if constexpr (std::is_same_v<T, Vec3>) {
+      return Vec3{get<double>(), get<double>(), get<double>()};
+    } else if constexpr (std::is_same_v<T, Vec4>) {
+      return Vec4{get<double>(), get<double>(), get<double>(), get<double>()};
+    } else {
+      Mat4 g;
+      for (auto& row : g.m)
+        for (double& e : row) e = get<double>();
+      return g;
+    }
   }
 
  private:
   const Values& x_;
   size_t i_ = 0;
 };
+
+// The double twin f(k, args...) of a routine as a function of its flat inputs.
+template <typename... Args, typename Twin>
+std::function<Values(const Values&)> twin(GeometryKind k, Twin f) {
+  return [k, f](const Values& x) {
+    Unpack in(x);
+    const std::tuple<Args...> args{in.get<Args>()...};  // braces read left to right
+    return std::apply([&](const Args&... a) { return values(f(k, a...)); }, args);
+  };
+}
 
 // S for each output of f at x (see the header comment).
 template <typename F>
@@ -145,7 +164,8 @@ class Agreement {
     }
   }
   void print(const char* geometry) const {
-    std::printf("  %-10s %-28s worst |error| %9.3g   worst %8.3g u (S+|f|)  (bound %g u (S+|f|) + %g)\n",
+    std::printf("  %-10s %-26s worst |error| %9.3g, beyond the floor %6.3g u (S+|f|)"
+                "  (bound %g u (S+|f|) + %g)\n",
                 geometry, name_.c_str(), worst_error_, worst_ulps_, ulps_, floor_);
   }
 
@@ -177,8 +197,8 @@ inline ::testing::AssertionResult sphere_agrees(GeometryKind k, const ProbeCase&
   const double r = c.params[1], t_min = c.params[2], t_max = c.params[3];
   const auto roots_of = [k](const Values& x) {
     Unpack in(x);
-    const Vec4 a = in.vec4(), b = in.vec4(), o = in.vec4();
-    const auto s = model::sphere_roots(k, a, b, o, in.scalar());
+    const Vec4 a = in.get<Vec4>(), b = in.get<Vec4>(), o = in.get<Vec4>();
+    const auto s = model::sphere_roots(k, a, b, o, in.get<double>());
     return Values{s.disc, s.t0, s.t1};
   };
   const Values x = values(p, v, centre, r);
@@ -222,6 +242,34 @@ inline ::testing::AssertionResult sphere_agrees(GeometryKind k, const ProbeCase&
          << " +- " << tol[2] << ")";
 }
 
+// The angle under which a sphere of radius r at distance d appears: sin alpha = r / d (E3),
+// sinh r / sinh d (H3), sin r / sin d (S3); pi/2 from inside.
+inline double angular_radius(GeometryKind k, double r, double d) {
+  double sin_alpha = r / d;
+  if (k == GeometryKind::Hyperbolic) sin_alpha = std::sinh(r) / std::sinh(d);
+  if (k == GeometryKind::Spherical) sin_alpha = std::sin(r) / std::sin(d);
+  return std::asin(std::min(1.0, sin_alpha));
+}
+
+// A ray at a sphere, exact (double) until a probe case rounds it to float, with its first hit
+// computed in double from the exact values (-1: none).
+struct Shot {
+  Vec4 p, v, c;
+  double r;
+  double exact;
+};
+
+inline Shot shot(GeometryKind k, const Vec4& p, const Vec4& v, const Vec4& c, double r) {
+  return {p, v, c, r, model::intersect_sphere(k, p, v, c, r, 0, kFar).value_or(-1)};
+}
+
+// The ray from p at the sphere (c, r) tilted by `angle` from the direction to c.
+inline Shot aimed(GeometryKind k, ModelSampler& sample, const Vec4& p, const Vec4& c, double r,
+                  double angle) {
+  const Vec4 e = model::geodesic_direction(k, p, c), f = sample.perpendicular(p, e);
+  return shot(k, p, std::cos(angle) * e + std::sin(angle) * f, c, r);
+}
+
 // How far each model reaches in the random cases: E3 a box of 10, H3 distance 3 (coordinates
 // up to cosh 3 ~ 10), S3 all of it.
 inline double reach(GeometryKind k) {
@@ -263,7 +311,17 @@ class ProbeCaseMaker {
     return c;
   }
 
-  // p and v for the sphere routines, rounded to float as the probe will see them.
+  // A random case carrying the sphere shot, tMin = 0, tMax = kFar.
+  ProbeCase make(const Shot& s) {
+    ProbeCase c = make();
+    c.point = f4(s.p);
+    c.tangent = f4(s.v);
+    c.sphere = f4(s.c);
+    c.params = {0, float(s.r), 0, kFar};
+    return c;
+  }
+
+  // v rounded to float, as the probe will see it.
   Vec4 rounded(const Vec4& v) const { return v4(f4(v)); }
 
  private:

@@ -5,7 +5,6 @@
 // tolerance (16 u (S + |t|) + 1e-6) and state what float achieves there.
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -19,29 +18,12 @@ constexpr double kPi = std::numbers::pi;
 constexpr GeometryKind kE = GeometryKind::Euclidean, kH = GeometryKind::Hyperbolic,
                        kS = GeometryKind::Spherical;
 
-// A ray at a sphere, exact (double) until the probe case rounds it to float, with its first
-// hit (-1: none) from the double model where all of it is well-conditioned.
-struct Shot {
-  Vec4 p, v, c;
-  double r;
-  double exact;
-};
-
-Shot shot(GeometryKind k, const Vec4& p, const Vec4& v, const Vec4& c, double r) {
-  return {p, v, c, r, model::intersect_sphere(k, p, v, c, r, 0, kFar).value_or(-1)};
-}
-
-// A ray from p towards the sphere (c, r), tilted from the direction to c by `fraction` of the
-// sphere's angular radius alpha seen from p (sin alpha = r/d, sinh r/sinh d, sin r/sin d).
+// A ray from p at the sphere (c, r), tilted from the direction to c by `fraction` of the
+// sphere's angular radius seen from p.
 Shot aimed_within(GeometryKind k, ModelSampler& sample, const Vec4& p, const Vec4& c, double r,
                   double fraction) {
-  const double d = model::geodesic_distance(k, p, c);
-  double sin_alpha = r / d;
-  if (k == kH) sin_alpha = std::sinh(r) / std::sinh(d);
-  if (k == kS) sin_alpha = std::sin(r) / std::sin(d);
-  const double angle = fraction * std::asin(std::min(1.0, sin_alpha));
-  const Vec4 e = model::geodesic_direction(k, p, c), f = sample.perpendicular(p, e);
-  return shot(k, p, std::cos(angle) * e + std::sin(angle) * f, c, r);
+  const double alpha = angular_radius(k, r, model::geodesic_distance(k, p, c));
+  return aimed(k, sample, p, c, r, fraction * alpha);
 }
 
 // Runs the shots, holds every float hit to the double one on the same (rounded) inputs, and
@@ -56,14 +38,7 @@ struct Row {
 Row sphere_row(const char* name, GeometryKind k, ProbeCaseMaker& maker,
                const std::vector<Shot>& shots) {
   std::vector<ProbeCase> cases;
-  for (const Shot& shot : shots) {
-    ProbeCase c = maker.make();
-    c.point = f4(shot.p);
-    c.tangent = f4(shot.v);
-    c.sphere = f4(shot.c);
-    c.params = {0, float(shot.r), 0, kFar};
-    cases.push_back(c);
-  }
+  for (const Shot& s : shots) cases.push_back(maker.make(s));
   const auto results = run_probe(k, cases);
   Row row;
   for (size_t i = 0; i < cases.size(); ++i) {
@@ -225,8 +200,8 @@ TEST(FloatNumerics, LightAtTheSphericalAntipode) {
     }
   }
   std::printf("S3 antipode: direction exactly 0 (no NaN) at the antipode; |distance - pi| <= %.2g;"
-              " 1e-3 short of it, direction within %.2g; sphere around it hit at pi - r within %.2g\n",
-              worst_distance, worst_near_direction, worst_hit);
+              " 1e-3 short of it, direction within %.2g; sphere around it hit at pi - r within"
+              " %.2g\n", worst_distance, worst_near_direction, worst_hit);
   EXPECT_LE(worst_distance, 1e-6);
   EXPECT_LE(worst_near_direction, 1e-3);  // conditioning 1 / sin(1e-3): float gives ~1e-4
   EXPECT_LE(worst_hit, 1e-5);

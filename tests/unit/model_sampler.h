@@ -17,7 +17,9 @@ namespace geodesic::test {
 inline double max_abs(const Vec4& v) {
   return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z), std::abs(v.w)});
 }
-inline double max_abs(const Vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
+inline double max_abs(const Vec3& v) {
+  return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
 inline double max_abs(const Mat4& g) {
   double m = 0;
   for (const auto& row : g.m)
@@ -39,7 +41,8 @@ inline double point_error(GeometryKind k, const Vec4& p) {
 
 // How far the unit tangent v at p is from unit and tangent: max(|<v,v> - 1|, |<p,v>|).
 inline double tangent_error(GeometryKind k, const Vec4& p, const Vec4& v) {
-  const double tangency = k == GeometryKind::Euclidean ? std::abs(v.w) : std::abs(model::inner(k, p, v));
+  const double tangency =
+      k == GeometryKind::Euclidean ? std::abs(v.w) : std::abs(model::inner(k, p, v));
   return std::max(std::abs(model::inner(k, v, v) - 1), tangency);
 }
 
@@ -51,7 +54,9 @@ class ModelSampler {
  public:
   ModelSampler(GeometryKind k, uint64_t seed) : k_(k), gen_(seed) {}
 
-  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(gen_); }
+  double uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(gen_);
+  }
   Vec3 unit3() {
     std::normal_distribution<double> g;
     return normalize(Vec3{g(gen_), g(gen_), g(gen_)});

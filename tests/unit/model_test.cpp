@@ -125,7 +125,8 @@ TEST_P(ModelTest, LiftInvertsTheChart) {
   for (int i = 0; i < 1000; ++i) {
     const Vec4 q = sample.point(spherical ? 1.5 : reach);  // S3: inside the chart, w > 0
     // 1 - |x|^2 = 1 / w^2 loses digits towards the Klein sphere: lift's error grows like w^3.
-    EXPECT_LE(max_abs(model::lift(k, model::chart(k, q)) - q), 8 * kEps * (1 + std::pow(q.w, 3))) << i;
+    EXPECT_LE(max_abs(model::lift(k, model::chart(k, q)) - q), 8 * kEps * (1 + std::pow(q.w, 3)))
+        << i;
   }
 }
 
@@ -204,7 +205,8 @@ TEST_P(ModelTest, OffsetFromSurfaceStepsAlongTheNormal) {
   const Vec4 up{0, 0, 1, 0};
   const GeometryKind e = GeometryKind::Euclidean;
   EXPECT_NEAR(model::offset_from_surface(e, model::origin(), up).z, 1e-4, 1e-18);
-  EXPECT_NEAR(model::offset_from_surface(e, {-1e4, 0, 5, 1}, up).z, 5 + 1e-4 + 1e4 / 32768.0, 1e-12);
+  EXPECT_NEAR(model::offset_from_surface(e, {-1e4, 0, 5, 1}, up).z, 5 + 1e-4 + 1e4 / 32768.0,
+              1e-12);
 }
 
 // The antipode of S3: every geodesic from p reaches -p at pi, so no direction is preferred.
@@ -224,7 +226,8 @@ TEST(SphericalModel, AntipodeIsReachedFromEveryDirection) {
   const Mat4 half_turn = model::translation_to(k, antipode);
   EXPECT_EQ(max_abs(half_turn * model::origin() - antipode), 0.0);
   EXPECT_EQ(model::isometry_error(k, half_turn), 0.0);
-  EXPECT_EQ(max_abs(difference(model::translation_from(k, antipode) * half_turn, Mat4::identity())), 0.0);
+  const Mat4 back = model::translation_from(k, antipode) * half_turn;
+  EXPECT_EQ(max_abs(difference(back, Mat4::identity())), 0.0);
   EXPECT_EQ(max_abs(model::log_origin(k, antipode)), 0.0);  // documented: not invertible there
   // Near it, the (1 - w) form keeps translation_to an isometry.
   const Vec4 q = model::exp_origin(k, {kPi - 1e-9, 0, 0});
