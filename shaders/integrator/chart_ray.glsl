@@ -23,6 +23,16 @@ struct ChartHit {
 
 ChartHit noChartHit() { return ChartHit(0u, 0u, FAR, FAR, vec2(0.0)); }
 
+// Model -> cell frame. Only S3's atlas changes charts between cells; E3 and H3 (with or without
+// a quotient) have one cell charted about the origin, so the identity compiles away there.
+mat4 cellChartIsometry(uint cell) {
+#if defined(GEOMETRY_SPHERICAL)
+  return cells[cell].chartIsometry;
+#else
+  return mat4(1.0);
+#endif
+}
+
 // The model ray (p, v) of a chart line o + s d, with p on the model's w > 0 part: the
 // derivative of liftChart along d, made a unit tangent.
 void modelRayOfChartLine(vec3 o, vec3 d, out vec4 p, out vec4 v) {

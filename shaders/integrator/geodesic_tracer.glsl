@@ -17,7 +17,7 @@ struct ChartLine {
 };
 
 ChartLine chartLineOf(GeodesicRay ray) {
-  mat4 P = cells[ray.cell].chartIsometry;
+  mat4 P = cellChartIsometry(ray.cell);
   ChartLine line;
   line.p = P * ray.p;
   line.v = P * ray.v;

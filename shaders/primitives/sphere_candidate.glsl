@@ -8,7 +8,7 @@
 bool sphereCandidate(SphereRef ref, vec4 p, vec4 v, float sMin, float sMax, out float s,
                      out float t) {
   Sphere sphere = spheres[ref.sphere];
-  vec4 center = cells[ref.cell].chartIsometry * sphere.center;
+  vec4 center = cellChartIsometry(ref.cell) * sphere.center;
   float tMax = sMax >= FAR ? FAR : distanceFromChartParameter(p, v, sMax);
   t = intersectGeodesicSphere(p, v, center, sphere.radius, 0.0, tMax);
   if (t <= 0.0) return false;

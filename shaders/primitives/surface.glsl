@@ -51,7 +51,7 @@ Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
   vec3 a = positions[i0].xyz, b = positions[i1].xyz, c = positions[i2].xyz;
   float w = 1.0 - hit.barycentrics.x - hit.barycentrics.y;
   vec3 x = w * a + hit.barycentrics.x * b + hit.barycentrics.y * c;
-  mat4 toModel = transpose(cells[ray.cell].chartIsometry);  // signed permutations: P^-1 = P^T
+  mat4 toModel = transpose(cellChartIsometry(ray.cell));  // signed permutations: P^-1 = P^T
   vec3 planeNormal = normalize(cross(b - a, c - a));
   vec4 qCell = liftChart(x);
   s.position = toModel * qCell;
@@ -62,7 +62,7 @@ Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
     vec4 n = w * normals[i0] + hit.barycentrics.x * normals[i1] + hit.barycentrics.y * normals[i2];
     if (dot(n, n) > 0.0) s.normal = normalizeTangent(s.position, n);
   }
-  mat4 P = cells[ray.cell].chartIsometry;
+  mat4 P = cellChartIsometry(ray.cell);
   float t = distanceFromChartParameter(P * ray.p, P * ray.v, hit.s);
   s.incoming = geodesicTangent(ray.p, ray.v, t);
   s.material = info.material;
