@@ -142,4 +142,17 @@ inline Vec3 read_rgb(const JsonNode& node) {
   return {read_non_negative(node[0]), read_non_negative(node[1]), read_non_negative(node[2])};
 }
 
+// A 4x4 matrix as 4 rows of 4 numbers, acting on column vectors.
+inline Mat4 read_matrix(const JsonNode& node) {
+  if (node.expect_array(4, "an array of 4 rows of 4 numbers") != 4)
+    node.fail("must be an array of 4 rows of 4 numbers");
+  Mat4 g;
+  for (std::size_t r = 0; r < 4; ++r) {
+    const JsonNode row = node[r];
+    if (row.expect_array(4, "a row of 4 numbers") != 4) row.fail("must be a row of 4 numbers");
+    for (std::size_t c = 0; c < 4; ++c) g.m[r][c] = read_number(row[c]);
+  }
+  return g;
+}
+
 }  // namespace geodesic

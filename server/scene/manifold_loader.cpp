@@ -11,18 +11,6 @@ constexpr double kFileTolerance = 1e-6;
 // Polyhedron construction and validation are cubic to quartic in the face count.
 constexpr std::size_t kMaxFaces = 64;
 
-Mat4 read_matrix(const JsonNode& node) {
-  if (node.expect_array(4, "an array of 4 rows of 4 numbers") != 4)
-    node.fail("must be an array of 4 rows of 4 numbers");
-  Mat4 g;
-  for (std::size_t r = 0; r < 4; ++r) {
-    const JsonNode row = node[r];
-    if (row.expect_array(4, "a row of 4 numbers") != 4) row.fail("must be a row of 4 numbers");
-    for (std::size_t c = 0; c < 4; ++c) g.m[r][c] = read_number(row[c]);
-  }
-  return g;
-}
-
 std::vector<DomainFace> read_faces(const JsonNode& node) {
   const std::size_t n = node.expect_array(1, "a non-empty array of faces");
   if (n > kMaxFaces) node.fail("must have at most " + std::to_string(kMaxFaces) + " faces");

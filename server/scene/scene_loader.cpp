@@ -60,7 +60,24 @@ Mat4 read_rotation(const JsonNode& node) {
 // The camera is an isometry: the transvection from the origin to its position, after a
 // rotation at the origin that turns -z to the view direction (transported back there).
 Camera read_camera(const JsonNode& node, GeometryKind kind) {
-  node.expect_object({"position", "look_at", "up", "rotation", "fov_y"});
+  node.expect_object({"position", "look_at", "up", "rotation", "fov_y", "pose"});
+  Camera camera;
+  if (const auto fov = node.find("fov_y")) {
+    camera.fov_y_degrees = read_number(*fov);
+    if (camera.fov_y_degrees <= 0 || camera.fov_y_degrees >= 180) fov->fail("must be in (0, 180)");
+  }
+  // The camera given directly as an isometry of the model (as the daemon reports it).
+  if (const auto pose = node.find("pose")) {
+    for (const char* other : {"position", "look_at", "up", "rotation"})
+      if (node.find(other)) node.fail(std::string("give either \"pose\" or \"") + other + "\", not both");
+    camera.pose = read_matrix(*pose);
+    const double error = model::isometry_error(kind, camera.pose);
+    if (!(error < 1e-6))
+      pose->fail(std::string("not an isometry of ") + geometry_name(kind) + " space (error " +
+                 std::to_string(error) + " > 1e-06)");
+    camera.pose = model::reorthonormalize(kind, camera.pose);
+    return camera;
+  }
   const Vec3 position = read_vec3(node.at("position"));
   const Mat4 to_position = model::translation(kind, position);
   const auto look_at = node.find("look_at");
@@ -69,7 +86,6 @@ Camera read_camera(const JsonNode& node, GeometryKind kind) {
   if (look_at && rotation) node.fail("give either \"look_at\" or \"rotation\", not both");
   if (up && !look_at) up->fail("only allowed together with \"look_at\"");
 
-  Camera camera;
   if (look_at) {
     const Vec3 target = read_vec3(*look_at);
     if (length(target - position) <= kDegenerate * std::max(1.0, length(position)))
@@ -88,10 +104,6 @@ Camera read_camera(const JsonNode& node, GeometryKind kind) {
     camera.pose = to_position * frame(right, cross(right, forward), -forward, {});
   } else {
     camera.pose = to_position * (rotation ? read_rotation(*rotation) : Mat4::identity());
-  }
-  if (const auto fov = node.find("fov_y")) {
-    camera.fov_y_degrees = read_number(*fov);
-    if (camera.fov_y_degrees <= 0 || camera.fov_y_degrees >= 180) fov->fail("must be in (0, 180)");
   }
   return camera;
 }

@@ -521,3 +521,31 @@ TEST(SceneLoader, ObjectsMustLieInsideTheFundamentalDomain) {
 
 }  // namespace
 }  // namespace geodesic
+
+namespace geodesic {
+namespace {
+
+TEST(SceneLoader, CameraMayBeGivenAsAnIsometryMatrix) {
+  const auto doc = [](const std::string& pose) {
+    return nlohmann::ordered_json::parse(
+        R"({"geometry": "hyperbolic", "camera": {"pose": )" + pose + R"(, "fov_y": 60}})");
+  };
+  // A boost by 0.5 along x: cosh and sinh of 0.5.
+  const double c = std::cosh(0.5), s = std::sinh(0.5);
+  const std::string boost = "[[" + std::to_string(c) + ", 0, 0, " + std::to_string(s) +
+                            "], [0, 1, 0, 0], [0, 0, 1, 0], [" + std::to_string(s) + ", 0, 0, " +
+                            std::to_string(c) + "]]";
+  const Scene scene = parse_scene(doc(boost), ".");
+  EXPECT_NEAR(scene.camera.pose.m[0][3], s, 1e-6);
+  EXPECT_LT(model::isometry_error(GeometryKind::Hyperbolic, scene.camera.pose), 1e-12);
+  try {
+    parse_scene(doc("[[1, 0, 0, 0.5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]"), ".");
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("camera.pose: not an isometry of hyperbolic space (error ", 0), 0u)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace geodesic
