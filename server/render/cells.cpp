@@ -75,6 +75,30 @@ bool Cell::contains(const Vec3& x, double tolerance) const {
   return true;
 }
 
+CameraPlacement place_camera(GeometryKind k, const std::vector<Cell>& cells, const Mat4& pose) {
+  CameraPlacement out{model::reorthonormalize(k, pose), 0};
+  if (cells.size() == 1) {
+    for (int step = 0; step < 64; ++step) {
+      const Vec3 x = model::chart(k, out.pose * model::origin());
+      const CellFace* outside = nullptr;
+      for (const CellFace& f : cells[0].faces)
+        if (dot(f.normal, x) > f.delta) outside = &f;
+      if (!outside) break;
+      out.pose = model::reorthonormalize(k, outside->pairing * out.pose);
+    }
+    return out;
+  }
+  double best = -2;
+  for (uint32_t c = 0; c < cells.size(); ++c) {
+    const double w = (cells[c].chart_isometry * (out.pose * model::origin())).w;
+    if (w > best) {
+      best = w;
+      out.cell = c;
+    }
+  }
+  return out;
+}
+
 std::vector<Cell> build_cells(const Scene& scene) {
   if (!scene.manifold.faces.empty()) {
     Cell cell{Mat4::identity(), 0, {}};

@@ -34,4 +34,13 @@ struct Cell {
 
 std::vector<Cell> build_cells(const Scene& scene);
 
+struct CameraPlacement {
+  Mat4 pose;          // carried into the fundamental domain, re-orthonormalised
+  uint32_t cell = 0;  // the cell whose chart holds the camera
+};
+
+// Where a camera pose lives in the cells: in a quotient it is carried into the domain by the
+// face pairings (as a walking camera is); in S3's atlas, the cell charted nearest to it.
+CameraPlacement place_camera(GeometryKind k, const std::vector<Cell>& cells, const Mat4& pose);
+
 }  // namespace geodesic

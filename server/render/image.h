@@ -1,6 +1,7 @@
 // A linear RGB float image, and its conversion to display values.
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 

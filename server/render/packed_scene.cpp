@@ -90,34 +90,6 @@ void pack_cell_spheres(const Scene& scene, const Cell& cell, uint32_t cell_index
   }
 }
 
-// The cell the camera starts in: for a quotient, the camera is first carried into the
-// fundamental domain by the face pairings (as a walking camera would be).
-void place_camera(const Scene& scene, const std::vector<Cell>& cells, PackedScene& out) {
-  const GeometryKind k = scene.geometry;
-  Mat4 pose = scene.camera.pose;
-  if (cells.size() == 1) {
-    const Cell& cell = cells[0];
-    for (int step = 0; step < 64; ++step) {
-      const Vec3 x = model::chart(k, pose * model::origin());
-      const CellFace* outside = nullptr;
-      for (const CellFace& f : cell.faces)
-        if (dot(f.normal, x) > f.delta) outside = &f;
-      if (!outside) break;
-      pose = model::reorthonormalize(k, outside->pairing * pose);
-    }
-  } else {
-    double best = -2;
-    for (uint32_t c = 0; c < cells.size(); ++c) {
-      const double w = (cells[c].chart_isometry * (pose * model::origin())).w;
-      if (w > best) {
-        best = w;
-        out.camera_cell = c;
-      }
-    }
-  }
-  out.camera_pose = pose;
-}
-
 }  // namespace
 
 PackedScene pack_scene(const Scene& scene) {
@@ -149,7 +121,9 @@ PackedScene pack_scene(const Scene& scene) {
     g.sphere_ref_count = uint32_t(out.sphere_refs.size()) - g.first_sphere_ref;
     out.cell_geometry.push_back(g);
   }
-  place_camera(scene, cells, out);
+  const CameraPlacement camera = place_camera(k, cells, scene.camera.pose);
+  out.camera_pose = camera.pose;
+  out.camera_cell = camera.cell;
   return out;
 }
 

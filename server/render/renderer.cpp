@@ -1,9 +1,20 @@
 #include "render/renderer.h"
 
+#include <cmath>
+
 namespace geodesic {
+namespace {
+
+double luminance(const float* rgb) { return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]; }
+
+}  // namespace
 
 Renderer::Renderer(VulkanContext& ctx, const Scene& scene, BackendKind backend)
-    : ctx_(ctx), resources_(ctx, scene), backend_(make_backend(backend, ctx, resources_)) {}
+    : ctx_(ctx),
+      geometry_(scene.geometry),
+      cells_(build_cells(scene)),
+      resources_(ctx, scene),
+      backend_(make_backend(backend, ctx, resources_)) {}
 
 void Renderer::add_samples(uint32_t samples) {
   if (samples == 0) return;
@@ -18,18 +29,48 @@ void Renderer::reset() {
   samples_ = 0;
 }
 
+Mat4 Renderer::set_view(const Mat4& camera_pose, int width, int height) {
+  const CameraPlacement placed = place_camera(geometry_, cells_, camera_pose);
+  resources_.set_view(placed.pose, placed.cell, uint32_t(width), uint32_t(height));
+  samples_ = 0;
+  return placed.pose;
+}
+
+void Renderer::set_max_depth(int max_depth) {
+  resources_.set_max_depth(uint32_t(max_depth));
+  samples_ = 0;
+}
+
 Image Renderer::image() const {
   Image image;
-  image.width = static_cast<int>(resources_.width());
-  image.height = static_cast<int>(resources_.height());
+  image.width = width();
+  image.height = height();
   const size_t pixels = size_t(image.width) * image.height;
   image.rgb.resize(pixels * 3);
-  const float* sums = resources_.accumulation();
+  const float* even = resources_.accumulation();
+  const float* odd = even + pixels * 4;
   for (size_t p = 0; p < pixels; ++p) {
-    const float count = sums[p * 4 + 3];
-    for (int c = 0; c < 3; ++c) image.rgb[p * 3 + c] = count > 0 ? sums[p * 4 + c] / count : 0;
+    const float count = even[p * 4 + 3] + odd[p * 4 + 3];
+    for (int c = 0; c < 3; ++c)
+      image.rgb[p * 3 + c] = count > 0 ? (even[p * 4 + c] + odd[p * 4 + c]) / count : 0;
   }
   return image;
+}
+
+double Renderer::estimated_error() const {
+  const size_t pixels = size_t(width()) * height();
+  const float* even = resources_.accumulation();
+  const float* odd = even + pixels * 4;
+  double difference = 0, signal = 0;
+  for (size_t p = 0; p < pixels; ++p) {
+    const float n_even = even[p * 4 + 3], n_odd = odd[p * 4 + 3];
+    if (n_even == 0 || n_odd == 0) return -1;
+    const double a = luminance(even + p * 4) / n_even, b = luminance(odd + p * 4) / n_odd;
+    const double c = (luminance(even + p * 4) + luminance(odd + p * 4)) / (n_even + n_odd);
+    difference += (a - b) * (a - b) / 4;
+    signal += c * c;
+  }
+  return signal > 0 ? std::sqrt(difference / signal) : -1;
 }
 
 }  // namespace geodesic

@@ -1,9 +1,12 @@
 // Progressive rendering of one scene on one device: each call adds samples to the float
-// accumulation buffer (sum and count per pixel); image() is the running mean.
+// accumulation buffers (sum and count per pixel, even and odd samples apart); image() is the
+// running mean and estimated_error() compares the two halves.
 #pragma once
 
 #include <memory>
+#include <vector>
 
+#include "render/cells.h"
 #include "render/image.h"
 #include "render/scene_resources.h"
 #include "render/trace_backend.h"
@@ -22,12 +25,25 @@ class Renderer {
   // Starts over (e.g. after the camera moved); sample indices restart too.
   void reset();
 
+  // A new camera isometry (carried into the fundamental domain) and a resolution no larger
+  // than the scene's; starts over. Returns the pose as placed.
+  Mat4 set_view(const Mat4& camera_pose, int width, int height);
+  void set_max_depth(int max_depth);
+  int width() const { return int(resources_.width()); }
+  int height() const { return int(resources_.height()); }
+
   Image image() const;
+  // Relative RMS error of image(), from the difference of the even and odd halves
+  // (docs/protocol.md); negative until both halves have a sample.
+  double estimated_error() const;
+
   const char* backend_name() const { return backend_->name(); }
   const VulkanContext& context() const { return ctx_; }
 
  private:
   VulkanContext& ctx_;
+  GeometryKind geometry_;
+  std::vector<Cell> cells_;
   SceneResources resources_;
   std::unique_ptr<TraceBackend> backend_;
   uint32_t samples_ = 0;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
+#include <string>
 #include <numbers>
 
 namespace geodesic {
@@ -44,9 +46,10 @@ SceneResources::SceneResources(VulkanContext& ctx, const Scene& scene)
       geometry_(scene.geometry),
       packed_(pack_scene(scene)), uniforms_(make_uniforms(scene, packed_)) {
   structures_ = SceneAccelerationStructures::build(ctx, packed_);
+  capacity_ = size_t(width()) * height();
   frame_ = GpuBuffer(ctx, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   std::memcpy(frame_.mapped(), &uniforms_, sizeof(uniforms_));
-  accumulation_ = GpuBuffer(ctx, VkDeviceSize(width()) * height() * 4 * sizeof(float),
+  accumulation_ = GpuBuffer(ctx, 2 * VkDeviceSize(width()) * height() * 4 * sizeof(float),
                             kStorage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   ray_counts_ = GpuBuffer(ctx, VkDeviceSize(width()) * height() * sizeof(uint32_t), kStorage);
   clear_accumulation();
@@ -71,6 +74,26 @@ SceneResources::~SceneResources() {
   vkDestroyPipelineLayout(device, pipeline_layout_, nullptr);
   vkDestroyDescriptorPool(device, pool_, nullptr);
   vkDestroyDescriptorSetLayout(device, set_layout_, nullptr);
+}
+
+void SceneResources::set_view(const Mat4& camera_pose, uint32_t camera_cell, uint32_t width,
+                              uint32_t height) {
+  if (width == 0 || height == 0 || size_t(width) * height > capacity_)
+    throw std::invalid_argument("resolution " + std::to_string(width) + "x" +
+                                std::to_string(height) + " exceeds the allocated buffers");
+  uniforms_.camera_pose = camera_pose.to_glsl();
+  uniforms_.camera_cell = camera_cell;
+  uniforms_.width = width;
+  uniforms_.height = height;
+  uniforms_.aspect = float(width) / float(height);
+  std::memcpy(frame_.mapped(), &uniforms_, sizeof(uniforms_));
+  clear_accumulation();
+}
+
+void SceneResources::set_max_depth(uint32_t max_depth) {
+  uniforms_.max_depth = max_depth;
+  std::memcpy(frame_.mapped(), &uniforms_, sizeof(uniforms_));
+  clear_accumulation();
 }
 
 void SceneResources::clear_accumulation() {

@@ -31,9 +31,15 @@ class SceneResources {
   uint32_t width() const { return uniforms_.width; }
   uint32_t height() const { return uniforms_.height; }
 
-  // Running per-pixel sums: rgb = radiance sum, a = sample count.
+  const PackedScene& packed() const { return packed_; }
+
+  // Running per-pixel sums (rgb = radiance sum, a = sample count) of the current width x
+  // height, in two halves: even-numbered samples, then odd-numbered ones.
   const float* accumulation() const { return static_cast<const float*>(accumulation_.mapped()); }
   void clear_accumulation();
+  // New camera and/or a resolution up to the allocated one (reduced while moving); clears.
+  void set_view(const Mat4& camera_pose, uint32_t camera_cell, uint32_t width, uint32_t height);
+  void set_max_depth(uint32_t max_depth);
   // Rays traced since the last clear, summed over pixels.
   uint64_t traced_rays() const;
   // Samples the integrator dropped for being NaN or infinite, since the scene was loaded.
@@ -46,6 +52,7 @@ class SceneResources {
   GeometryKind geometry_;
   PackedScene packed_;
   FrameUniforms uniforms_{};
+  size_t capacity_ = 0;  // pixels the buffers hold
   SceneAccelerationStructures structures_;
   GpuBuffer frame_, accumulation_, spheres_, materials_, lights_, positions_, normals_,
       indices_, triangles_, ray_counts_, sphere_refs_, cells_, faces_, diagnostics_;

@@ -53,6 +53,7 @@ struct CellFace {
 };
 
 layout(set = 0, binding = 0) uniform accelerationStructureEXT uScene;
+// Two halves of width * height pixels each: even- and odd-numbered samples (sum rgb, count a).
 layout(set = 0, binding = 1, std430) buffer Accumulation { vec4 accumulation[]; };
 layout(set = 0, binding = 2, std140) uniform Frame {
   mat4 cameraPose;    // camera frame -> model isometry

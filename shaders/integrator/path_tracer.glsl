@@ -45,21 +45,25 @@ vec3 pixelSample(uvec2 pixel, inout uint rng) {
   return pathRadiance(ray, rng);
 }
 
-// Adds push.sampleCount samples to the pixel's running sum (rgb) and count (a).
+// Adds push.sampleCount samples to the pixel's running sums (rgb) and counts (a), kept in two
+// halves, even- and odd-numbered samples: their difference estimates the remaining error.
 void accumulatePixel(uvec2 pixel) {
   if (pixel.x >= frame.width || pixel.y >= frame.height) return;
   uint index = pixel.y * frame.width + pixel.x;
-  vec3 sum = vec3(0.0);
+  vec4 halves[2] = vec4[2](vec4(0.0), vec4(0.0));
   for (uint i = 0u; i < push.sampleCount; ++i) {
-    uint rng = rngSeed(index, push.sampleStart + i, frame.seed);
+    uint sampleIndex = push.sampleStart + i;
+    uint rng = rngSeed(index, sampleIndex, frame.seed);
     vec3 value = pixelSample(pixel, rng);
     // A NaN/Inf sample would poison the pixel forever: drop its value, and count it.
-    if (any(isnan(value)) || any(isinf(value)))
+    if (any(isnan(value)) || any(isinf(value))) {
       atomicAdd(nonFiniteSamples, 1u);
-    else
-      sum += value;
+      value = vec3(0.0);
+    }
+    halves[sampleIndex & 1u] += vec4(value, 1.0);
   }
-  accumulation[index] += vec4(sum, float(push.sampleCount));
+  accumulation[index] += halves[0];
+  accumulation[index + frame.width * frame.height] += halves[1];
   rayCounts[index] += tracedRays;
 }
 

@@ -1,0 +1,25 @@
+// JPEG frames for streaming, with libjpeg-turbo (TurboJPEG): the fastest encoder Debian ships.
+#pragma once
+
+#include <vector>
+
+#include "render/image.h"
+
+namespace geodesic {
+
+class JpegEncoder {
+ public:
+  JpegEncoder();
+  ~JpegEncoder();
+  JpegEncoder(const JpegEncoder&) = delete;
+  JpegEncoder& operator=(const JpegEncoder&) = delete;
+
+  // Tone-maps (sRGB, clamped) and encodes; quality 1-100. Throws std::runtime_error.
+  std::vector<unsigned char> encode(const Image& image, int quality = 85);
+
+ private:
+  void* handle_;
+  std::vector<unsigned char> rgb_;
+};
+
+}  // namespace geodesic

@@ -1,0 +1,269 @@
+#include "render/render_service.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <condition_variable>
+#include <filesystem>
+#include <map>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+#include "render/jpeg_encoder.h"
+#include "render/renderer.h"
+#include "scene/scene_loader.h"
+
+namespace geodesic {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Each session gets a slice this long before the next one's turn; a frame follows each slice.
+constexpr double kSliceSeconds = 0.04;
+// After a move, frames are rendered at 1/kMovingDivisor resolution until the camera has been
+// still this long (fast feedback while walking, full quality when still).
+constexpr int kMovingDivisor = 2;
+constexpr double kSettleSeconds = 0.25;
+
+double seconds_since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+}  // namespace
+
+struct Session {
+  RenderService::FrameCallback on_frame;
+  Scene scene;
+  std::string scene_name;
+  std::unique_ptr<Renderer> renderer;
+  Mat4 pose;
+  int width = 0, height = 0;  // the full resolution asked for
+  bool moving = false;
+  Clock::time_point last_move, reset_time;
+  uint64_t frame = 0;
+  uint32_t batch = 1;  // samples per slice, adapted to kSliceSeconds
+};
+
+struct RenderService::Impl {
+  VulkanContext ctx;
+  std::string scene_dir;
+  ServiceLimits limits;
+  JpegEncoder encoder;
+
+  mutable std::mutex mutex;  // guards everything below and all Vulkan work
+  std::condition_variable wake;
+  std::map<SessionId, std::unique_ptr<Session>> sessions;
+  SessionId next_id = 1;
+  SessionId last_served = 0;
+  bool stopping = false;
+  ServiceStats stats;
+  double recent_samples = 0;
+  Clock::time_point window_start = Clock::now();
+  std::thread thread;
+
+  Impl(const std::string& device, std::string dir, ServiceLimits l)
+      : ctx(device), scene_dir(std::move(dir)), limits(l) {
+    stats.device = ctx.description().name;
+    thread = std::thread([this] { run(); });
+  }
+
+  ~Impl() {
+    {
+      std::lock_guard lock(mutex);
+      stopping = true;
+    }
+    wake.notify_all();
+    thread.join();
+  }
+
+  Session& find(SessionId id) {
+    auto it = sessions.find(id);
+    if (it == sessions.end()) throw std::invalid_argument("session: no such session");
+    return *it->second;
+  }
+
+  // Checks the scene against the server's limits, then builds its renderer: on any error the
+  // session keeps its old scene.
+  SceneInfo install(Session& s, Scene scene, std::string name) {
+    if (scene.render.width > limits.max_width)
+      throw SceneError("render.width: must be <= " + std::to_string(limits.max_width) + " on this server");
+    if (scene.render.height > limits.max_height)
+      throw SceneError("render.height: must be <= " + std::to_string(limits.max_height) + " on this server");
+    if (scene.render.max_depth > limits.max_depth)
+      throw SceneError("render.max_depth: must be <= " + std::to_string(limits.max_depth) + " on this server");
+    auto renderer = std::make_unique<Renderer>(ctx, scene);
+    s.renderer = std::move(renderer);
+    s.scene = std::move(scene);
+    s.scene_name = std::move(name);
+    s.width = s.scene.render.width;
+    s.height = s.scene.render.height;
+    s.pose = s.scene.camera.pose;
+    restart(s, false);
+    return info(s);
+  }
+
+  // A new view: reduced resolution while moving, full when still; accumulation starts over.
+  void restart(Session& s, bool moving) {
+    s.moving = moving;
+    const int w = moving ? std::max(16, s.width / kMovingDivisor) : s.width;
+    const int h = moving ? std::max(16, s.height / kMovingDivisor) : s.height;
+    s.pose = s.renderer->set_view(s.pose, w, h);
+    s.reset_time = Clock::now();
+    s.batch = 1;
+  }
+
+  static SceneInfo info(const Session& s) {
+    return {s.scene_name, geometry_name(s.scene.geometry), s.scene.manifold.name, s.width,
+            s.height, s.scene.render.max_depth};
+  }
+
+  // The render thread: serve sessions round-robin, one slice each.
+  void run() {
+    std::unique_lock lock(mutex);
+    while (!stopping) {
+      auto it = sessions.upper_bound(last_served);
+      if (it == sessions.end()) it = sessions.begin();
+      if (it == sessions.end()) {
+        wake.wait_for(lock, std::chrono::milliseconds(50));
+        continue;
+      }
+      last_served = it->first;
+      stats.queue_depth = int(sessions.size()) - 1;
+      serve(*it->second);
+      // Let waiting commands (moves, new scenes) in between slices.
+      lock.unlock();
+      std::this_thread::yield();
+      lock.lock();
+    }
+  }
+
+  void serve(Session& s) {
+    if (s.moving && seconds_since(s.last_move) > kSettleSeconds) restart(s, false);
+    const auto start = Clock::now();
+    s.renderer->add_samples(s.batch);
+    const double took = seconds_since(start);
+    const double pixel_samples = double(s.batch) * s.renderer->width() * s.renderer->height();
+    if (took < kSliceSeconds / 2 && s.batch < 256) s.batch *= 2;
+    else if (took > kSliceSeconds * 2 && s.batch > 1) s.batch /= 2;
+
+    const auto encode_start = Clock::now();
+    auto frame = std::make_shared<EncodedFrame>();
+    frame->jpeg = encoder.encode(s.renderer->image());
+    stats.encode_seconds_sum += seconds_since(encode_start);
+    ++stats.encode_count;
+    ++stats.frames;
+    frame->info = {++s.frame, s.renderer->samples(), seconds_since(s.reset_time),
+                   s.renderer->estimated_error(), s.renderer->width(), s.renderer->height(),
+                   s.moving, s.pose};
+
+    recent_samples += pixel_samples;
+    const double window = seconds_since(window_start);
+    if (window > 1.0) {
+      stats.samples_per_second = recent_samples / window;
+      recent_samples = 0;
+      window_start = Clock::now();
+    }
+    s.on_frame(std::move(frame));
+  }
+};
+
+RenderService::RenderService(const std::string& device, std::string scene_dir,
+                             ServiceLimits limits)
+    : impl_(std::make_unique<Impl>(device, std::move(scene_dir), limits)) {}
+
+RenderService::~RenderService() = default;
+
+std::vector<std::string> RenderService::bundled_scenes() const {
+  std::vector<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator(impl_->scene_dir))
+    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+const ServiceLimits& RenderService::limits() const { return impl_->limits; }
+
+RenderService::SessionId RenderService::open_session(FrameCallback on_frame) {
+  Scene scene = load_scene_file(std::filesystem::path(impl_->scene_dir) / "cornell-box.json");
+  std::lock_guard lock(impl_->mutex);
+  if (int(impl_->sessions.size()) >= impl_->limits.max_sessions)
+    throw std::runtime_error("too many sessions (" + std::to_string(impl_->limits.max_sessions) +
+                             " open)");
+  auto session = std::make_unique<Session>();
+  session->on_frame = std::move(on_frame);
+  impl_->install(*session, std::move(scene), "cornell-box");
+  const SessionId id = impl_->next_id++;
+  impl_->sessions[id] = std::move(session);
+  impl_->stats.sessions = int(impl_->sessions.size());
+  impl_->wake.notify_all();
+  return id;
+}
+
+void RenderService::close_session(SessionId id) {
+  std::lock_guard lock(impl_->mutex);
+  impl_->sessions.erase(id);  // frees its renderer and buffers
+  impl_->stats.sessions = int(impl_->sessions.size());
+}
+
+SceneInfo RenderService::load_scene(SessionId id, const std::string& name) {
+  const auto names = bundled_scenes();
+  if (std::find(names.begin(), names.end(), name) == names.end())
+    throw SceneError("scene: unknown bundled scene \"" + name + "\"");
+  Scene scene = load_scene_file(std::filesystem::path(impl_->scene_dir) / (name + ".json"));
+  std::lock_guard lock(impl_->mutex);
+  return impl_->install(impl_->find(id), std::move(scene), name);
+}
+
+SceneInfo RenderService::load_scene_document(SessionId id, const nlohmann::ordered_json& doc) {
+  Scene scene = parse_scene(doc, impl_->scene_dir);
+  std::string name = scene.name.empty() ? "document" : scene.name;
+  std::lock_guard lock(impl_->mutex);
+  return impl_->install(impl_->find(id), std::move(scene), std::move(name));
+}
+
+void RenderService::move_camera(SessionId id, const CameraMotion& motion) {
+  std::lock_guard lock(impl_->mutex);
+  Session& s = impl_->find(id);
+  s.pose = apply_motion(s.scene.geometry, s.pose, motion);
+  s.last_move = Clock::now();
+  impl_->restart(s, true);
+}
+
+SceneInfo RenderService::apply_settings(SessionId id, const SessionSettings& settings) {
+  const ServiceLimits& l = impl_->limits;
+  if (settings.width != 0 && (settings.width < 16 || settings.width > l.max_width))
+    throw std::invalid_argument("width: must be in [16, " + std::to_string(l.max_width) + "]");
+  if (settings.height != 0 && (settings.height < 16 || settings.height > l.max_height))
+    throw std::invalid_argument("height: must be in [16, " + std::to_string(l.max_height) + "]");
+  if (settings.max_depth != -1 && (settings.max_depth < 0 || settings.max_depth > l.max_depth))
+    throw std::invalid_argument("max_depth: must be in [0, " + std::to_string(l.max_depth) + "]");
+  std::lock_guard lock(impl_->mutex);
+  Session& s = impl_->find(id);
+  const int width = settings.width ? settings.width : s.width;
+  const int height = settings.height ? settings.height : s.height;
+  if (width > s.scene.render.width || height > s.scene.render.height) {
+    // Larger than the buffers: rebuild the renderer at the new size.
+    Scene scene = s.scene;
+    scene.render.width = width;
+    scene.render.height = height;
+    scene.camera.pose = s.pose;
+    const std::string name = s.scene_name;
+    impl_->install(s, std::move(scene), name);
+  }
+  s.width = width;
+  s.height = height;
+  if (settings.max_depth != -1) {
+    s.scene.render.max_depth = settings.max_depth;
+    s.renderer->set_max_depth(settings.max_depth);
+  }
+  impl_->restart(s, false);
+  return Impl::info(s);
+}
+
+ServiceStats RenderService::stats() const {
+  std::lock_guard lock(impl_->mutex);
+  return impl_->stats;
+}
+
+}  // namespace geodesic

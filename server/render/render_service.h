@@ -1,0 +1,95 @@
+// The daemon's renderer: owns the Vulkan device and one render thread that serves every session
+// in turn (round-robin, a time slice each, so no session starves another), keeps each session's
+// scene, camera, settings and accumulation, and hands each new JPEG frame to the session's
+// callback. Thread-safe: every public function may be called from any thread.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "geometry/vec.h"
+#include "scene/camera_motion.h"
+
+namespace geodesic {
+
+struct FrameInfo {
+  uint64_t frame = 0;     // per session, increasing
+  uint32_t spp = 0;       // samples per pixel so far
+  double elapsed = 0;     // seconds since the last reset
+  double error = -1;      // estimated relative RMS error; < 0 while unknown
+  int width = 0, height = 0;
+  bool moving = false;    // reduced resolution right after a move
+  Mat4 camera;            // the camera isometry
+};
+
+struct EncodedFrame {
+  FrameInfo info;
+  std::vector<unsigned char> jpeg;
+};
+
+struct SceneInfo {
+  std::string name, geometry, manifold;
+  int width = 0, height = 0, max_depth = 0;
+};
+
+// Absent fields keep their value.
+struct SessionSettings {
+  int width = 0, height = 0, max_depth = -1;
+};
+
+struct ServiceStats {
+  int sessions = 0;
+  uint64_t frames = 0;            // encoded, all sessions
+  double samples_per_second = 0;  // pixel samples per second, recent
+  double encode_seconds_sum = 0;  // total JPEG encode time
+  uint64_t encode_count = 0;
+  int queue_depth = 0;            // sessions waiting for the render thread
+  std::string device;
+};
+
+struct ServiceLimits {
+  int max_sessions = 16;
+  int max_width = 1920, max_height = 1080, max_depth = 16;
+};
+
+class RenderService {
+ public:
+  using SessionId = uint64_t;
+  // Called on the render thread with each new frame of the session; it must return quickly and
+  // must not call back into the service (hand the frame to another thread).
+  using FrameCallback = std::function<void(std::shared_ptr<const EncodedFrame>)>;
+
+  // device: as --device; scene_dir: where bundled scenes live. Throws VulkanError.
+  RenderService(const std::string& device, std::string scene_dir, ServiceLimits limits = {});
+  ~RenderService();
+  RenderService(const RenderService&) = delete;
+  RenderService& operator=(const RenderService&) = delete;
+
+  std::vector<std::string> bundled_scenes() const;
+  const ServiceLimits& limits() const;
+
+  // Opens a session on the default scene ("cornell-box"); throws std::runtime_error when
+  // max_sessions are open.
+  SessionId open_session(FrameCallback on_frame);
+  void close_session(SessionId id);
+
+  // Each throws geodesic::SceneError / std::invalid_argument ("<field>: <reason>") on bad
+  // input, leaving the session as it was.
+  SceneInfo load_scene(SessionId id, const std::string& bundled_name);
+  SceneInfo load_scene_document(SessionId id, const nlohmann::ordered_json& document);
+  void move_camera(SessionId id, const CameraMotion& motion);
+  SceneInfo apply_settings(SessionId id, const SessionSettings& settings);
+
+  ServiceStats stats() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace geodesic

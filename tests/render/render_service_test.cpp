@@ -1,0 +1,99 @@
+// The daemon's render service without the network: sessions, progressive frames, moves,
+// settings and bad input.
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+
+#include "render/render_service.h"
+#include "render_fixture.h"
+
+namespace geodesic::test {
+namespace {
+
+// Collects a session's frames; waits for the next one that satisfies a condition.
+class FrameLog {
+ public:
+  RenderService::FrameCallback callback() {
+    return [this](std::shared_ptr<const EncodedFrame> frame) {
+      std::lock_guard lock(mutex_);
+      last_ = std::move(frame);
+      changed_.notify_all();
+    };
+  }
+
+  template <typename Predicate>
+  std::shared_ptr<const EncodedFrame> wait_for(Predicate ok, double seconds = 20) {
+    std::unique_lock lock(mutex_);
+    changed_.wait_for(lock, std::chrono::duration<double>(seconds),
+                      [&] { return last_ && ok(last_->info); });
+    return last_ && ok(last_->info) ? last_ : nullptr;
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::shared_ptr<const EncodedFrame> last_;
+};
+
+TEST(RenderService, StreamsRefiningFramesAndRestartsOnAMove) {
+  RenderService service("", source_path("scenes").string());
+  FrameLog log;
+  const auto id = service.open_session(log.callback());
+  service.apply_settings(id, {.width = 64, .height = 48});
+
+  auto first = log.wait_for([](const FrameInfo& f) { return f.width == 64 && f.spp >= 2; });
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->jpeg.at(0), 0xFF);  // JPEG SOI marker
+  EXPECT_EQ(first->jpeg.at(1), 0xD8);
+  const double early_error = first->info.error;
+  auto later = log.wait_for([&](const FrameInfo& f) { return f.spp >= 8 * first->info.spp; });
+  ASSERT_TRUE(later);
+  EXPECT_LT(later->info.error, early_error);
+
+  service.move_camera(id, {.forward = 0.2});
+  auto moved = log.wait_for([](const FrameInfo& f) { return f.moving; });
+  ASSERT_TRUE(moved);
+  EXPECT_EQ(moved->info.width, 32);  // reduced resolution while moving
+  EXPECT_LT(moved->info.spp, later->info.spp);
+  EXPECT_NE(moved->info.camera.m[2][3], later->info.camera.m[2][3]);
+  auto settled = log.wait_for([](const FrameInfo& f) { return !f.moving && f.width == 64; });
+  ASSERT_TRUE(settled);
+  EXPECT_GT(service.stats().frames, 3u);
+}
+
+TEST(RenderService, BadInputNamesTheFieldAndKeepsTheScene) {
+  RenderService service("", source_path("scenes").string());
+  FrameLog log;
+  const auto id = service.open_session(log.callback());
+  EXPECT_THROW(service.load_scene(id, "no-such-scene"), SceneError);
+  try {
+    service.load_scene_document(id, nlohmann::ordered_json::parse(R"({"geometry": "flat"})"));
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("geometry: unknown geometry"), std::string::npos);
+  }
+  EXPECT_THROW(service.apply_settings(id, {.width = 4}), std::invalid_argument);
+  const SceneInfo info = service.apply_settings(id, {.width = 40, .height = 30});
+  EXPECT_EQ(info.name, "cornell-box");  // still the old scene
+  ASSERT_TRUE(log.wait_for([](const FrameInfo& f) { return f.width == 40 && f.spp > 0; }));
+  const SceneInfo torus = service.load_scene(id, "torus-cornell");
+  EXPECT_EQ(torus.manifold, "torus");
+}
+
+TEST(RenderService, SessionsShareTheDeviceFairly) {
+  RenderService service("", source_path("scenes").string(), {.max_sessions = 2});
+  FrameLog a, b;
+  const auto first = service.open_session(a.callback());
+  const auto second = service.open_session(b.callback());
+  EXPECT_THROW(service.open_session(FrameLog().callback()), std::runtime_error);
+  service.apply_settings(first, {.width = 48, .height = 48});
+  service.apply_settings(second, {.width = 48, .height = 48});
+  ASSERT_TRUE(a.wait_for([](const FrameInfo& f) { return f.frame >= 10; }));
+  ASSERT_TRUE(b.wait_for([](const FrameInfo& f) { return f.frame >= 10; }));
+  service.close_session(first);
+  EXPECT_EQ(service.stats().sessions, 1);
+  service.close_session(second);
+}
+
+}  // namespace
+}  // namespace geodesic::test
