@@ -38,6 +38,20 @@ packages=(
   libboost-dev libboost-system-dev libsqlite3-dev libturbojpeg0-dev
   python3
 )
+# Browser tests of the web client (tests/web): Debian's Chromium, driven by playwright-core
+# from npm. Node.js only if the machine has none (an existing one may not be Debian's).
+packages+=(chromium)
+{ command -v node && command -v npm; } >/dev/null 2>&1 || packages+=(nodejs npm)
+
+# playwright-core, pinned by tests/web/package-lock.json; `npm ci` again only when the lock file
+# is newer than the installed tree (npm ci writes node_modules/.package-lock.json).
+install_web_test_deps() {
+  local dir
+  dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/tests/web"
+  if [ "$dir/package-lock.json" -nt "$dir/node_modules/.package-lock.json" ]; then
+    (cd "$dir" && npm ci --no-audit --no-fund)
+  fi
+}
 
 missing=()
 for p in "${packages[@]}"; do
@@ -47,6 +61,7 @@ mesa_version=$(dpkg-query -W -f='${Version}' mesa-vulkan-drivers 2>/dev/null || 
 mesa_major=${mesa_version%%.*}
 mesa_major=${mesa_major#*:}
 if [ ${#missing[@]} -eq 0 ] && [ -n "$mesa_major" ] && [ "$mesa_major" -ge 24 ]; then
+  install_web_test_deps
   echo "install-deps: everything is installed (Mesa $mesa_version)"
   exit 0
 fi
@@ -74,4 +89,5 @@ fi
 # Lavapipe with VK_KHR_ray_tracing_pipeline (Mesa >= 24.1) from backports.
 apt-get install -y -qq --no-install-recommends -t bookworm-backports mesa-vulkan-drivers
 
+install_web_test_deps
 echo "install-deps: done"

@@ -1,4 +1,4 @@
-// `geodesic` command line: render a scene to an image, or list Vulkan devices.
+// `geodesic` command line: render a scene to an image, list Vulkan devices, or serve.
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -7,6 +7,7 @@
 namespace geodesic {
 int render_command(int argc, char** argv);
 int devices_command(int argc, char** argv);
+int serve_command(int argc, char** argv);
 }  // namespace geodesic
 
 namespace {
@@ -17,7 +18,10 @@ const char* kUsage =
     "  render SCENE.json -o OUT.{png,exr,jpg} [--spp N | --time SECONDS] [--width W]\n"
     "         [--height H] [--max-depth D] [--seed S] [--device NAME|INDEX]\n"
     "         [--backend auto|ray-query|pipeline]\n"
-    "  devices       list Vulkan devices and whether each can ray-trace\n";
+    "  devices       list Vulkan devices and whether each can ray-trace\n"
+    "  serve [--host H] [--port P] [--device NAME|INDEX] [--web DIR]\n"
+    "                the render daemon: HTTP and WebSocket (docs/protocol.md), default\n"
+    "                127.0.0.1:8080, until SIGINT or SIGTERM\n";
 
 }  // namespace
 
@@ -30,6 +34,7 @@ int main(int argc, char** argv) {
   try {
     if (command == "render") return geodesic::render_command(argc - 2, argv + 2);
     if (command == "devices") return geodesic::devices_command(argc - 2, argv + 2);
+    if (command == "serve") return geodesic::serve_command(argc - 2, argv + 2);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "geodesic %s: %s\n", command.c_str(), e.what());
     return 1;

@@ -23,10 +23,14 @@ struct FrameUniforms {
 };
 static_assert(sizeof(FrameUniforms) == 128, "must match the std140 layout of Frame");
 
-// Which samples one dispatch adds (push constants).
+// Which samples one dispatch adds, to which rows (push constants): a sample of a large image
+// can be split into bands of rows, so that the render thread can turn to a camera move or to
+// another session in between.
 struct SampleRange {
   uint32_t start;
   uint32_t count;
+  uint32_t row_offset = 0;
+  uint32_t row_count = 0;  // rows in this dispatch
 };
 
 }  // namespace geodesic

@@ -32,7 +32,7 @@ class RayQueryBackend : public TraceBackend {
                             &set, 0, nullptr);
     vkCmdPushConstants(cmd, res_.pipeline_layout(), SceneResources::kShaderStages, 0, sizeof(range), &range);
     vkCmdDispatch(cmd, (res_.width() + kGroupSizeX - 1) / kGroupSizeX,
-                  (res_.height() + kGroupSizeY - 1) / kGroupSizeY, 1);
+                  (range.row_count + kGroupSizeY - 1) / kGroupSizeY, 1);
   }
 
  private:

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <chrono>
 #include <condition_variable>
 #include <filesystem>
@@ -21,10 +22,13 @@ using Clock = std::chrono::steady_clock;
 
 // Each session gets a slice this long before the next one's turn; a frame follows each slice.
 constexpr double kSliceSeconds = 0.04;
-// After a move, frames are rendered at 1/kMovingDivisor resolution until the camera has been
-// still this long (fast feedback while walking, full quality when still).
-constexpr int kMovingDivisor = 2;
+// After a move, frames are rendered at reduced resolution until the camera has been still this
+// long (fast feedback while walking, full quality when still), as Cycles' viewport does: the
+// divisor is chosen from the measured cost so that one sample of the frame takes about
+// kMovingFrameSeconds.
 constexpr double kSettleSeconds = 0.25;
+constexpr double kMovingFrameSeconds = 0.03;
+constexpr int kMaxMovingDivisor = 8;
 
 double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
@@ -42,7 +46,9 @@ struct Session {
   bool moving = false;
   Clock::time_point last_move, reset_time;
   uint64_t frame = 0;
-  uint32_t batch = 1;  // samples per slice, adapted to kSliceSeconds
+  uint32_t batch = 1;     // samples per pass, adapted to kSliceSeconds
+  uint32_t next_row = 0;  // where the current pass goes on: large images render in bands
+  double seconds_per_pixel_sample = 0;  // measured, smoothed
 };
 
 struct RenderService::Impl {
@@ -106,11 +112,18 @@ struct RenderService::Impl {
   // A new view: reduced resolution while moving, full when still; accumulation starts over.
   void restart(Session& s, bool moving) {
     s.moving = moving;
-    const int w = moving ? std::max(16, s.width / kMovingDivisor) : s.width;
-    const int h = moving ? std::max(16, s.height / kMovingDivisor) : s.height;
+    int divisor = 1;
+    if (moving) {
+      const double full_sample = s.seconds_per_pixel_sample * s.width * s.height;
+      divisor = std::clamp(int(std::ceil(std::sqrt(full_sample / kMovingFrameSeconds))), 2,
+                           kMaxMovingDivisor);
+    }
+    const int w = std::max(16, s.width / divisor);
+    const int h = std::max(16, s.height / divisor);
     s.pose = s.renderer->set_view(s.pose, w, h);
     s.reset_time = Clock::now();
     s.batch = 1;
+    s.next_row = 0;
   }
 
   static SceneInfo info(const Session& s) {
@@ -138,14 +151,31 @@ struct RenderService::Impl {
     }
   }
 
+  // One slice: a band of rows of the current pass (the whole image when it fits in a slice);
+  // a frame goes out when the pass is complete.
   void serve(Session& s) {
     if (s.moving && seconds_since(s.last_move) > kSettleSeconds) restart(s, false);
+    const int width = s.renderer->width(), height = s.renderer->height();
+    const double row_cost = s.seconds_per_pixel_sample * width * s.batch;
+    const int rows = row_cost > 0 ? std::clamp(int(kSliceSeconds / row_cost), 1, height) : height;
+    const int band = std::min(rows, height - int(s.next_row));
     const auto start = Clock::now();
-    s.renderer->add_samples(s.batch);
+    s.renderer->render_rows(s.batch, s.next_row, uint32_t(band));
     const double took = seconds_since(start);
-    const double pixel_samples = double(s.batch) * s.renderer->width() * s.renderer->height();
-    if (took < kSliceSeconds / 2 && s.batch < 256) s.batch *= 2;
-    else if (took > kSliceSeconds * 2 && s.batch > 1) s.batch /= 2;
+    const double pixel_samples = double(s.batch) * width * band;
+    const double cost = took / pixel_samples;
+    s.seconds_per_pixel_sample =
+        s.seconds_per_pixel_sample > 0 ? 0.7 * s.seconds_per_pixel_sample + 0.3 * cost : cost;
+    recent_samples += pixel_samples;
+    s.next_row += uint32_t(band);
+    if (int(s.next_row) < height) return;
+
+    s.renderer->finish_pass(s.batch);
+    s.next_row = 0;
+    if (band == height) {  // the whole pass fit in this slice: size the next one to the slice
+      if (took < kSliceSeconds / 2 && s.batch < 256) s.batch *= 2;
+      else if (took > kSliceSeconds * 2 && s.batch > 1) s.batch /= 2;
+    }
 
     const auto encode_start = Clock::now();
     auto frame = std::make_shared<EncodedFrame>();
@@ -157,7 +187,6 @@ struct RenderService::Impl {
                    s.renderer->estimated_error(), s.renderer->width(), s.renderer->height(),
                    s.moving, s.pose};
 
-    recent_samples += pixel_samples;
     const double window = seconds_since(window_start);
     if (window > 1.0) {
       stats.samples_per_second = recent_samples / window;

@@ -17,11 +17,15 @@ Renderer::Renderer(VulkanContext& ctx, const Scene& scene, BackendKind backend)
       backend_(make_backend(backend, ctx, resources_)) {}
 
 void Renderer::add_samples(uint32_t samples) {
-  if (samples == 0) return;
+  render_rows(samples, 0, uint32_t(height()));
+  finish_pass(samples);
+}
+
+void Renderer::render_rows(uint32_t samples, uint32_t row_begin, uint32_t rows) {
+  if (samples == 0 || rows == 0) return;
   ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
-    backend_->record(cmd, SampleRange{samples_, samples});
+    backend_->record(cmd, SampleRange{samples_, samples, row_begin, rows});
   });
-  samples_ += samples;
 }
 
 void Renderer::reset() {

@@ -19,6 +19,10 @@ class Renderer {
 
   // Adds `samples` samples per pixel, in one submission.
   void add_samples(uint32_t samples);
+  // A band of a pass: adds `samples` samples (numbered from samples()) to rows
+  // [row_begin, row_begin + rows) only; finish_pass(samples) counts them once every band is done.
+  void render_rows(uint32_t samples, uint32_t row_begin, uint32_t rows);
+  void finish_pass(uint32_t samples) { samples_ += samples; }
   uint32_t samples() const { return samples_; }
   uint64_t traced_rays() const { return resources_.traced_rays(); }
   uint32_t non_finite_samples() const { return resources_.non_finite_samples(); }

@@ -15,7 +15,7 @@ class TraceBackend {
  public:
   virtual ~TraceBackend() = default;
   virtual const char* name() const = 0;
-  // Records a dispatch adding `range` samples to every pixel.
+  // Records a dispatch adding `range` samples to every pixel of its rows.
   virtual void record(VkCommandBuffer cmd, SampleRange range) = 0;
 };
 

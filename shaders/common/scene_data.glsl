@@ -85,10 +85,13 @@ layout(set = 0, binding = 13, std430) readonly buffer CellFaces { CellFace cellF
 // Samples dropped because they were NaN or infinite (tests require none).
 layout(set = 0, binding = 14, std430) buffer Diagnostics { uint nonFiniteSamples; };
 
-// Which samples this dispatch adds: [sampleStart, sampleStart + sampleCount).
+// Which samples this dispatch adds, [sampleStart, sampleStart + sampleCount), to which rows:
+// the dispatch's y runs over [rowOffset, rowOffset + rowCount).
 layout(push_constant) uniform Push {
   uint sampleStart;
   uint sampleCount;
+  uint rowOffset;
+  uint rowCount;
 } push;
 
 // Rays traced by this invocation so far; the entry points' trace functions count into it.

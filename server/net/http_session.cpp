@@ -1,0 +1,132 @@
+#include "net/http_session.h"
+
+#include <string>
+#include <string_view>
+#include <utility>
+
+#include <nlohmann/json.hpp>
+
+#include "net/metrics.h"
+#include "net/static_files.h"
+#include "net/websocket_session.h"
+
+namespace geodesic::net {
+namespace {
+
+using Request = http::request<http::string_body>;
+using Response = http::response<http::string_body>;
+
+Response make_response(const Request& request, http::status status, std::string_view mime,
+                       std::string body) {
+  Response response(status, request.version());
+  response.set(http::field::server, "geodesic");
+  response.set(http::field::content_type, beast::string_view(mime.data(), mime.size()));
+  response.keep_alive(request.keep_alive());
+  response.body() = std::move(body);
+  response.prepare_payload();
+  return response;
+}
+
+Response json_response(const Request& request, const nlohmann::ordered_json& body) {
+  return make_response(request, http::status::ok, "application/json", body.dump());
+}
+
+Response error_response(const Request& request, http::status status, std::string_view text) {
+  return make_response(request, status, "text/plain; charset=utf-8", std::string(text) + "\n");
+}
+
+std::string_view path_of(const Request& request) {
+  const std::string_view target(request.target().data(), request.target().size());
+  return target.substr(0, target.find('?'));
+}
+
+Response answer(const Request& request, ServerContext& context) {
+  if (request.method() != http::verb::get && request.method() != http::verb::head) {
+    Response response = error_response(request, http::status::method_not_allowed,
+                                       "only GET and HEAD");
+    response.set(http::field::allow, "GET, HEAD");
+    return response;
+  }
+  const std::string_view path = path_of(request);
+  if (path == "/healthz") {
+    const ServiceStats stats = context.render.stats();
+    return json_response(request,
+                         {{"status", "ok"}, {"device", stats.device}, {"sessions", stats.sessions}});
+  }
+  if (path == "/metrics")
+    return make_response(request, http::status::ok, "text/plain; version=0.0.4; charset=utf-8",
+                         prometheus_metrics(context.render.stats(), context.counters));
+  if (path == "/api/scenes")
+    return json_response(request, {{"scenes", context.render.bundled_scenes()}});
+  auto file = load_static_file(context.options.web_dir, path);
+  if (!file) return error_response(request, http::status::not_found, "not found");
+  return make_response(request, http::status::ok, file->mime_type, std::move(file->body));
+}
+
+}  // namespace
+
+HttpSession::HttpSession(tcp::socket&& socket, ServerContext& context)
+    : context_(context), stream_(std::move(socket)) {}
+
+void HttpSession::start() {
+  asio::dispatch(stream_.get_executor(),
+                 beast::bind_front_handler(&HttpSession::read, shared_from_this()));
+}
+
+void HttpSession::read() {
+  parser_.emplace();
+  parser_->body_limit(kMaxMessageBytes);
+  // One deadline for the whole request: a client trickling bytes cannot keep the connection.
+  stream_.expires_after(context_.options.http_timeout);
+  http::async_read(stream_, buffer_, *parser_,
+                   beast::bind_front_handler(&HttpSession::on_read, shared_from_this()));
+}
+
+void HttpSession::on_read(beast::error_code ec, std::size_t) {
+  if (ec == http::error::end_of_stream) return shutdown();
+  if (ec == http::error::body_limit) {
+    Request head;  // answer as HTTP/1.1, then close
+    head.keep_alive(false);
+    return send(error_response(head, http::status::payload_too_large, "body too large"));
+  }
+  if (ec) return;  // timed out, reset, or not HTTP: just drop the connection
+
+  Request request = parser_->release();
+  if (websocket::is_upgrade(request)) {
+    if (path_of(request) != "/ws")
+      return send(error_response(request, http::status::not_found, "WebSocket only at /ws"));
+    std::make_shared<WebSocketSession>(stream_.release_socket(), context_)
+        ->start(std::move(request));
+    return;
+  }
+  Response response;
+  try {
+    response = answer(request, context_);
+  } catch (const std::exception& e) {
+    response = error_response(request, http::status::internal_server_error, e.what());
+  }
+  if (request.method() == http::verb::head) response.body().clear();  // headers keep the length
+  send(std::move(response));
+}
+
+void HttpSession::send(http::response<http::string_body> response) {
+  response_ = std::move(response);
+  const bool keep_alive = response_.keep_alive();
+  stream_.expires_after(context_.options.http_timeout);
+  http::async_write(stream_, response_,
+                    beast::bind_front_handler(&HttpSession::on_write, shared_from_this(),
+                                              keep_alive));
+}
+
+void HttpSession::on_write(bool keep_alive, beast::error_code ec, std::size_t) {
+  if (ec) return;
+  if (!keep_alive) return shutdown();
+  read();
+}
+
+void HttpSession::shutdown() {
+  beast::error_code ignored;
+  stream_.socket().shutdown(tcp::socket::shutdown_send, ignored);
+}
+
+}  // namespace geodesic::net

@@ -1,0 +1,166 @@
+#include "net/protocol.h"
+
+#include <cmath>
+#include <initializer_list>
+#include <utility>
+
+namespace geodesic::net {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Invalid UTF-8 echoed from client input must not make dump() throw.
+std::string dump(const Json& message) {
+  return message.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
+void reject_unknown_fields(const Json& message, std::initializer_list<std::string_view> known) {
+  for (const auto& [key, value] : message.items()) {
+    if (key == "type") continue;
+    bool found = false;
+    for (std::string_view k : known) found = found || k == key;
+    if (!found) throw ProtocolError(key, "unknown field");
+  }
+}
+
+double finite_number(const Json& message, const std::string& key) {
+  const Json& v = message.at(key);
+  if (!v.is_number() || !std::isfinite(v.get<double>()))
+    throw ProtocolError(key, "must be a finite number");
+  return v.get<double>();
+}
+
+int integer_in(const Json& message, const std::string& key, int min, int max) {
+  const Json& v = message.at(key);
+  const std::string range = "[" + std::to_string(min) + ", " + std::to_string(max) + "]";
+  if (!v.is_number_integer()) throw ProtocolError(key, "must be an integer in " + range);
+  const int64_t n = v.get<int64_t>();
+  if (n < min || n > max) throw ProtocolError(key, "must be in " + range);
+  return static_cast<int>(n);
+}
+
+OpenRequest parse_open(const Json& message) {
+  reject_unknown_fields(message, {"scene", "document"});
+  const bool has_scene = message.contains("scene"), has_document = message.contains("document");
+  if (has_scene == has_document)
+    throw ProtocolError(has_scene ? "document" : "scene",
+                        "give either scene (a bundled name) or document (an inline scene)");
+  OpenRequest open;
+  if (has_scene) {
+    if (!message["scene"].is_string()) throw ProtocolError("scene", "must be a string");
+    open.scene = message["scene"].get<std::string>();
+  } else {
+    if (!message["document"].is_object()) throw ProtocolError("document", "must be an object");
+    open.document = message["document"];
+  }
+  return open;
+}
+
+CameraMotion parse_move(const Json& message) {
+  reject_unknown_fields(message, {"forward", "right", "up", "yaw", "pitch", "roll"});
+  CameraMotion m;
+  const std::pair<const char*, double*> fields[] = {
+      {"forward", &m.forward}, {"right", &m.right}, {"up", &m.up},
+      {"yaw", &m.yaw},         {"pitch", &m.pitch}, {"roll", &m.roll}};
+  for (const auto& [key, target] : fields)
+    if (message.contains(key)) *target = finite_number(message, key);
+  return m;
+}
+
+SessionSettings parse_settings(const Json& message, const ServiceLimits& limits) {
+  reject_unknown_fields(message, {"width", "height", "max_depth"});
+  SessionSettings s;
+  if (message.contains("width")) s.width = integer_in(message, "width", 16, limits.max_width);
+  if (message.contains("height")) s.height = integer_in(message, "height", 16, limits.max_height);
+  if (message.contains("max_depth"))
+    s.max_depth = integer_in(message, "max_depth", 0, limits.max_depth);
+  return s;
+}
+
+// nlohmann's messages start with "[json.exception.parse_error.101] "; the rest is the reason.
+std::string without_exception_id(const std::string& what) {
+  const auto end = what.find("] ");
+  return what.starts_with("[json.exception") && end != std::string::npos ? what.substr(end + 2)
+                                                                          : what;
+}
+
+}  // namespace
+
+ClientMessage parse_client_message(std::string_view text, const ServiceLimits& limits) {
+  Json message;
+  try {
+    message = Json::parse(text);
+  } catch (const Json::parse_error& e) {
+    throw ProtocolError("", "invalid JSON: " + without_exception_id(e.what()));
+  }
+  if (!message.is_object()) throw ProtocolError("", "a message must be a JSON object");
+  if (!message.contains("type")) throw ProtocolError("type", "missing");
+  if (!message["type"].is_string()) throw ProtocolError("type", "must be a string");
+  const std::string type = message["type"].get<std::string>();
+  if (type == "open") return parse_open(message);
+  if (type == "move") return parse_move(message);
+  if (type == "settings") return parse_settings(message, limits);
+  throw ProtocolError("type", "unknown message type \"" + type + "\" (open, move or settings)");
+}
+
+ProtocolError service_error(const std::exception& error, const OpenRequest* open) {
+  // Split "<path>: <reason>" when the text before ": " looks like a path (no spaces).
+  const std::string what = error.what();
+  std::string path, reason = what;
+  const auto colon = what.find(": ");
+  if (colon != std::string::npos && colon > 0 && what.find(' ') > colon) {
+    path = what.substr(0, colon);
+    reason = what.substr(colon + 2);
+  }
+  if (open && open->scene) return ProtocolError("scene", path == "scene" ? reason : what);
+  if (open) {
+    if (path.empty() || path == "(root)") return ProtocolError("document", reason);
+    return ProtocolError(path[0] == '[' ? "document" + path : "document." + path, reason);
+  }
+  return ProtocolError(path, reason);
+}
+
+std::string hello_message(uint64_t session, const std::vector<std::string>& scenes,
+                          const ServiceLimits& limits, std::size_t max_message_bytes,
+                          std::chrono::milliseconds idle_timeout) {
+  return dump(Json{{"type", "hello"},
+                   {"session", session},
+                   {"scenes", scenes},
+                   {"limits",
+                    {{"max_message_bytes", max_message_bytes},
+                     {"max_width", limits.max_width},
+                     {"max_height", limits.max_height},
+                     {"max_sessions", limits.max_sessions},
+                     {"idle_timeout_seconds", idle_timeout.count() / 1000.0}}}});
+}
+
+std::string scene_message(const SceneInfo& scene) {
+  return dump(Json{{"type", "scene"},
+                   {"name", scene.name},
+                   {"geometry", scene.geometry},
+                   {"manifold", scene.manifold},
+                   {"width", scene.width},
+                   {"height", scene.height},
+                   {"max_depth", scene.max_depth}});
+}
+
+std::string frame_message(const FrameInfo& frame) {
+  Json camera = Json::array();
+  for (const auto& row : frame.camera.m)
+    for (double v : row) camera.push_back(v);
+  return dump(Json{{"type", "frame"},
+                   {"frame", frame.frame},
+                   {"spp", frame.spp},
+                   {"elapsed", frame.elapsed},
+                   {"error", frame.error < 0 ? Json(nullptr) : Json(frame.error)},
+                   {"width", frame.width},
+                   {"height", frame.height},
+                   {"moving", frame.moving},
+                   {"camera", std::move(camera)}});
+}
+
+std::string error_message(const ProtocolError& error) {
+  return dump(Json{{"type", "error"}, {"field", error.field()}, {"message", error.what()}});
+}
+
+}  // namespace geodesic::net

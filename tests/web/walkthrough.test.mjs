@@ -1,0 +1,346 @@
+// A walk through the web client in real headless Chromium (Debian's /usr/bin/chromium, driven
+// by playwright-core) against a running `geodesic serve`: the page connects, frames appear and
+// refine, W moves the camera, the picker switches scenes, a bad scene shows its error, render
+// jobs answer, and a dead server shows the "unreachable" banner.
+//
+// Run through tests/web/run.sh, which starts the daemon and sets:
+//   GEODESIC_URL    the daemon's http://host:port (required)
+//   GEODESIC_PID    its process id: the last test kills it to see the banner (skipped without)
+//   SCREENSHOT_DIR  where screenshots go (default build/web-screenshots/)
+//   CHROMIUM        the browser (default /usr/bin/chromium)
+
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import fs from 'node:fs';
+import os from 'node:os';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+
+const here = path.dirname(fileURLToPath(import.meta.url));
+const BASE = process.env.GEODESIC_URL;
+const SCREENSHOT_DIR = process.env.SCREENSHOT_DIR || path.resolve(here, '../../build/web-screenshots');
+const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
+// Small frames keep lavapipe quick; the page's URL parameters set them before the first frame.
+const START = '/?width=160&height=120&depth=2';
+// Everything waits on a software renderer that may share two cores with other tests.
+const FRAME_TIMEOUT = 60_000;
+
+if (!BASE) throw new Error('GEODESIC_URL is not set: run tests/web/run.sh');
+
+let userDataDir;
+let context;
+let page;
+const wsLog = []; // { dir: 'sent' | 'received', msg } for every JSON message on the socket
+const pageErrors = []; // uncaught exceptions in the page
+
+before(async () => {
+  fs.mkdirSync(SCREENSHOT_DIR, { recursive: true });
+  userDataDir = fs.mkdtempSync(path.join(os.tmpdir(), 'geodesic-chromium-'));
+  // The flags keep Chromium off the network (this machine has none but loopback) and off the
+  // sandbox (we run as root); a fresh profile so no state leaks between runs.
+  context = await chromium.launchPersistentContext(userDataDir, {
+    executablePath: CHROMIUM,
+    headless: true,
+    viewport: { width: 1100, height: 700 },
+    args: [
+      '--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+      '--disable-background-networking', '--disable-component-update', '--disable-sync',
+    ],
+  });
+  page = context.pages()[0] ?? (await context.newPage());
+  page.on('console', (m) => {
+    // The test's own pixel reads cause a getImageData performance hint: not the page's fault.
+    if (m.text().includes('willReadFrequently')) return;
+    if (m.type() === 'error' || m.type() === 'warning') console.log(`[page ${m.type()}] ${m.text()}`);
+  });
+  page.on('pageerror', (err) => {
+    console.log(`[page exception] ${err.message}`);
+    pageErrors.push(err.message);
+  });
+  recordSocket(page, wsLog);
+});
+
+after(async () => {
+  await context?.close();
+  if (userDataDir) fs.rmSync(userDataDir, { recursive: true, force: true });
+});
+
+// Keeps every JSON text message of the page's WebSockets (the JPEGs are binary and skipped).
+function recordSocket(p, log) {
+  p.on('websocket', (ws) => {
+    ws.on('framesent', (f) => push('sent', f.payload));
+    ws.on('framereceived', (f) => push('received', f.payload));
+  });
+  function push(dir, payload) {
+    if (typeof payload !== 'string') return;
+    try {
+      log.push({ dir, msg: JSON.parse(payload) });
+    } catch {
+      // not JSON: the test only reads JSON messages
+    }
+  }
+}
+
+const sentOfType = (type) => wsLog.filter((e) => e.dir === 'sent' && e.msg.type === type).map((e) => e.msg);
+const receivedOfType = (type) =>
+  wsLog.filter((e) => e.dir === 'received' && e.msg.type === type).map((e) => e.msg);
+
+// The scene each received frame belongs to: frames follow their scene's `scene` message, but
+// one frame of the old scene, already on its way, may come right after it (the page drops it);
+// it continues the old accumulation rather than starting anew.
+function frameScenes() {
+  const byFrame = new Map();
+  let scene = null;
+  let next = null; // the scene named by a `scene` message, until its first frame
+  let last = null;
+  for (const { dir, msg } of wsLog) {
+    if (dir !== 'received') continue;
+    if (msg.type === 'scene') next = msg.name;
+    if (msg.type !== 'frame') continue;
+    const continues = last !== null && msg.spp > last.spp && msg.elapsed > last.elapsed;
+    if (next !== null && !(continues && scene !== null)) {
+      scene = next;
+      next = null;
+    }
+    byFrame.set(msg.frame, { scene, spp: msg.spp, moving: msg.moving, width: msg.width, height: msg.height });
+    last = msg;
+  }
+  return byFrame;
+}
+
+// The canvas's pixels reduced to a grid of block-mean luminances: blocks average away most of
+// the Monte Carlo noise, so comparing two grids tells a changed view from a refined one.
+async function canvasBlocks(p, cols = 16, rows = 12) {
+  return p.evaluate(
+    ([cols, rows]) => {
+      const c = document.getElementById('view');
+      const { data, width, height } = c.getContext('2d').getImageData(0, 0, c.width, c.height);
+      const sums = new Float64Array(cols * rows);
+      const counts = new Float64Array(cols * rows);
+      let max = 0;
+      for (let y = 0; y < height; y++) {
+        for (let x = 0; x < width; x++) {
+          const i = 4 * (y * width + x);
+          const lum = 0.2126 * data[i] + 0.7152 * data[i + 1] + 0.0722 * data[i + 2];
+          const b = Math.floor((y * rows) / height) * cols + Math.floor((x * cols) / width);
+          sums[b] += lum;
+          counts[b] += 1;
+          max = Math.max(max, lum);
+        }
+      }
+      return { blocks: Array.from(sums, (s, b) => s / counts[b]), max, width, height };
+    },
+    [cols, rows],
+  );
+}
+
+function meanAbsDiff(a, b) {
+  assert.equal(a.blocks.length, b.blocks.length);
+  return a.blocks.reduce((s, v, i) => s + Math.abs(v - b.blocks[i]), 0) / a.blocks.length;
+}
+
+const shownFrame = (p) => p.evaluate(() => Number(document.getElementById('view').dataset.frame ?? -1));
+
+// Waits until the canvas shows a frame at least `minSpp` samples deep that satisfies `accept`
+// (given the frame's { scene, spp, moving }): the frames on the canvas and on the socket are
+// matched by their frame numbers.
+async function waitForShownFrame(p, minSpp, accept = () => true, timeout = FRAME_TIMEOUT) {
+  const deadline = Date.now() + timeout;
+  for (;;) {
+    const n = await shownFrame(p);
+    const info = frameScenes().get(n);
+    if (info && !info.moving && info.spp >= minSpp && accept({ frame: n, ...info })) return { frame: n, ...info };
+    if (Date.now() > deadline) {
+      throw new Error(`no frame with spp >= ${minSpp} shown in ${timeout} ms (showing ${n}: ${JSON.stringify(info)})`);
+    }
+    await p.waitForTimeout(100);
+  }
+}
+
+const statSpp = (p) => p.evaluate(() => Number(document.getElementById('stat-spp').textContent));
+
+test('the page loads, connects and shows a frame', async () => {
+  await page.goto(BASE + START);
+  assert.equal(await page.title(), 'Geodesic');
+  // The picker fills from the `hello` message's scenes.
+  await page.waitForSelector('#scene-picker:not([disabled])', { timeout: FRAME_TIMEOUT });
+  assert.equal(await page.getAttribute('#status', 'data-state'), 'open');
+  const hello = receivedOfType('hello')[0];
+  assert.ok(hello, 'no hello message');
+  const options = await page.$$eval('#scene-picker option', (os) => os.map((o) => o.value));
+  assert.deepEqual(options, hello.scenes);
+  assert.ok(options.includes('cornell-box'));
+
+  // The default scene's first frames may come at its own resolution, before our settings.
+  const shown = await waitForShownFrame(page, 1, (f) => f.width === 160 && f.height === 120);
+  const img = await canvasBlocks(page);
+  assert.deepEqual([img.width, img.height], [160, 120], 'the URL parameters set 160x120');
+  assert.ok(img.max > 20, `the canvas is blank (brightest pixel ${img.max})`);
+  const spread = Math.max(...img.blocks) - Math.min(...img.blocks);
+  assert.ok(spread > 5, `the canvas is flat (block spread ${spread})`);
+  assert.equal(shown.scene, 'cornell-box', 'the default scene streams first');
+  // The page asked for the small resolution itself.
+  assert.ok(sentOfType('settings').some((m) => m.width === 160 && m.height === 120));
+});
+
+test('samples accumulate while the camera is still', async () => {
+  const first = await statSpp(page);
+  await page.waitForFunction((n) => Number(document.getElementById('stat-spp').textContent) > n, first, {
+    timeout: FRAME_TIMEOUT,
+  });
+  // Two samples give an error estimate, and the log-log plot starts.
+  await page.waitForFunction(() => document.getElementById('stat-error').textContent.includes('%'), null, {
+    timeout: FRAME_TIMEOUT,
+  });
+  const rate = await page.textContent('#stat-rate');
+  assert.match(rate, /samples\/s$/);
+});
+
+test('the depth control sends settings', async () => {
+  await page.fill('#depth', '3');
+  await page.press('#depth', 'Enter');
+  await waitFor(() => sentOfType('settings').some((m) => m.max_depth === 3), 'settings {max_depth: 3}');
+});
+
+test('W moves the camera forward and the image changes', async () => {
+  // A reference image deep enough that its noise is small beside a change of view.
+  const still = await waitForShownFrame(page, 8);
+  const before = await canvasBlocks(page);
+  // Noise floor: the same view a few samples later.
+  await waitForShownFrame(page, still.spp + 4, (f) => f.scene === 'cornell-box');
+  const noise = meanAbsDiff(before, await canvasBlocks(page));
+
+  const movesBefore = sentOfType('move').length;
+  await page.focus('#view');
+  await page.keyboard.down('KeyW');
+  await page.waitForTimeout(400);
+  await page.keyboard.up('KeyW');
+  const moves = sentOfType('move').slice(movesBefore);
+  assert.ok(moves.length > 0, 'no move message sent');
+  const forward = moves.reduce((s, m) => s + (m.forward ?? 0), 0);
+  assert.ok(forward > 0.1, `moved forward by only ${forward}`);
+  assert.ok(moves.every((m) => m.right === undefined && m.yaw === undefined), 'W moves straight ahead');
+
+  // The server resets accumulation; wait for the new view to refine as far as the old one. The
+  // frame already on its way when the last move went out (at most one is in flight) may still
+  // show an older view, so only the frames after it count.
+  const lastMove = wsLog.findLastIndex((e) => e.dir === 'sent' && e.msg.type === 'move');
+  const after = await waitForShownFrame(page, 8, (f) => framesAfter(lastMove).slice(1).includes(f.frame));
+  const changed = meanAbsDiff(before, await canvasBlocks(page));
+  console.log(`# move: forward ${forward.toFixed(3)} in ${moves.length} messages, block diff ${changed.toFixed(2)} (noise ${noise.toFixed(2)}), frame ${after.frame}`);
+  assert.ok(changed > Math.max(3 * noise, 2), `the image barely changed: ${changed} (noise ${noise})`);
+  await page.screenshot({ path: path.join(SCREENSHOT_DIR, 'walkthrough-moved.png') });
+});
+
+// Frame numbers received after wsLog index `index`.
+function framesAfter(index) {
+  return wsLog.slice(index + 1).filter((e) => e.dir === 'received' && e.msg.type === 'frame').map((e) => e.msg.frame);
+}
+
+async function waitFor(predicate, what, timeout = 10_000) {
+  const deadline = Date.now() + timeout;
+  while (!predicate()) {
+    if (Date.now() > deadline) throw new Error(`timed out waiting for ${what}`);
+    await new Promise((r) => setTimeout(r, 50));
+  }
+}
+
+test('dragging the view turns the camera', async () => {
+  const box = await page.locator('#view').boundingBox();
+  const movesBefore = sentOfType('move').length;
+  const x = box.x + box.width / 2;
+  const y = box.y + box.height / 2;
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  for (let i = 1; i <= 5; i++) {
+    await page.mouse.move(x + 8 * i, y - 2 * i);
+    await page.waitForTimeout(20);
+  }
+  await page.mouse.up();
+  await waitFor(() => sentOfType('move').length > movesBefore, 'a move from the drag');
+  await page.waitForTimeout(100); // the last animation frame's batch
+  const moves = sentOfType('move').slice(movesBefore);
+  const yaw = moves.reduce((s, m) => s + (m.yaw ?? 0), 0);
+  const pitch = moves.reduce((s, m) => s + (m.pitch ?? 0), 0);
+  // Drag right turns right (negative yaw), drag up looks up (positive pitch); no translation.
+  assert.ok(yaw < -5 && pitch > 1, `drag gave yaw ${yaw}, pitch ${pitch}`);
+  assert.ok(moves.every((m) => m.forward === undefined && m.right === undefined && m.up === undefined));
+});
+
+test('the scene picker switches scenes and the image changes', async () => {
+  const before = await canvasBlocks(page);
+  const options = await page.$$eval('#scene-picker option', (os) => os.map((o) => o.value));
+  // A scene that looks nothing like the Cornell box.
+  const target = ['poincare-sphere', 'hyperbolic-spheres', 'mirrored-dodecahedron', 'torus-cornell']
+    .find((s) => options.includes(s)) ?? options.find((s) => s !== 'cornell-box');
+  assert.ok(target, 'only one scene to pick');
+
+  await page.selectOption('#scene-picker', target);
+  await waitFor(() => sentOfType('open').some((m) => m.scene === target), `open ${target}`);
+  const shown = await waitForShownFrame(page, 4, (f) => f.scene === target);
+  const scene = receivedOfType('scene').at(-1);
+  assert.equal(scene.name, target);
+  assert.equal(await page.inputValue('#scene-picker'), target);
+  assert.match(await page.textContent('#scene-title'), new RegExp(target));
+
+  const img = await canvasBlocks(page);
+  assert.deepEqual([img.width, img.height], [160, 120], 'the page re-applies its resolution to the new scene');
+  const changed = meanAbsDiff(before, img);
+  console.log(`# scene ${target}: block diff ${changed.toFixed(2)}, frame ${shown.frame} at ${shown.spp} spp`);
+  assert.ok(changed > 2, `the image did not change with the scene: ${changed}`);
+  // Let the error plot gather a few points for the screenshot.
+  await waitForShownFrame(page, 8, (f) => f.scene === target, 15_000).catch(() => {});
+  await page.screenshot({ path: path.join(SCREENSHOT_DIR, 'walkthrough.png') });
+});
+
+test('the render job button answers', async () => {
+  await page.click('#render-job');
+  await page.waitForFunction(
+    () => !['', 'submitting…'].includes(document.getElementById('job-status').textContent),
+    null,
+    { timeout: 10_000 },
+  );
+  const text = await page.textContent('#job-status');
+  assert.match(text, /render jobs not available on this server|queued/);
+});
+
+test('a bad scene shows its error and the session goes on', async () => {
+  const p = await context.newPage();
+  const log = [];
+  recordSocket(p, log);
+  try {
+    await p.goto(`${BASE}/?scene=no-such-scene&width=160&height=120&depth=1`);
+    await p.waitForSelector('#errors:not([hidden])', { timeout: FRAME_TIMEOUT });
+    const error = log.find((e) => e.dir === 'received' && e.msg.type === 'error')?.msg;
+    assert.ok(error, 'no error message from the server');
+    const shown = await p.textContent('#errors');
+    assert.ok(shown.includes(error.message), `"${shown}" lacks the server's message "${error.message}"`);
+    if (error.field) assert.ok(shown.includes(error.field), `"${shown}" lacks the field "${error.field}"`);
+    // The old (default) scene stays and keeps streaming, at the resolution the page asked for
+    // once its `open` had failed.
+    await p.waitForFunction(() => document.getElementById('view').width === 160, null, { timeout: FRAME_TIMEOUT });
+    assert.equal(await p.inputValue('#scene-picker'), 'cornell-box');
+    assert.ok(
+      log.some((e) => e.dir === 'sent' && e.msg.type === 'settings' && e.msg.width === 160 && e.msg.max_depth === 1),
+      'no settings sent after the failed open',
+    );
+    await p.screenshot({ path: path.join(SCREENSHOT_DIR, 'walkthrough-error.png') });
+  } finally {
+    await p.close();
+  }
+});
+
+test('the page threw no exceptions', () => {
+  assert.deepEqual(pageErrors, []);
+});
+
+test('a dead server shows the unreachable banner', { skip: !process.env.GEODESIC_PID && 'GEODESIC_PID not set' }, async () => {
+  process.kill(Number(process.env.GEODESIC_PID), 'SIGTERM');
+  await page.waitForFunction(
+    () => document.getElementById('status').textContent.includes('server unreachable — retrying'),
+    null,
+    { timeout: 30_000 },
+  );
+  await page.screenshot({ path: path.join(SCREENSHOT_DIR, 'walkthrough-unreachable.png') });
+});

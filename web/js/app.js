@@ -1,0 +1,317 @@
+// Wires the client together: the connection, the viewer, the camera controls, the convergence
+// read-out and the side panel. The server owns the truth (scene, camera, accumulation); this
+// page keeps only what the user asked for (`wanted`), so it can ask again when a reconnect
+// starts a fresh session.
+//
+// URL parameters set the starting point, e.g. ?scene=torus-cornell&width=320&height=240&depth=3.
+
+import { Connection, defaultSocketUrl } from './connection.js';
+import { Viewer } from './viewer.js';
+import { Controls } from './controls.js';
+import { Stats } from './stats.js';
+
+const $ = (id) => document.getElementById(id);
+const clamp = (v, lo, hi) => Math.min(hi, Math.max(lo, v));
+
+const ui = {
+  status: $('status'),
+  title: $('scene-title'),
+  canvas: $('view'),
+  errors: $('errors'),
+  picker: $('scene-picker'),
+  width: $('width'),
+  height: $('height'),
+  depth: $('depth'),
+  speed: $('speed'),
+  jobButton: $('render-job'),
+  jobStatus: $('job-status'),
+};
+
+const MAX_ERRORS_SHOWN = 3;
+
+// What the user asked for; null means "whatever the scene says".
+const params = new URLSearchParams(location.search);
+const intParam = (name) => {
+  const v = Number.parseInt(params.get(name) ?? '', 10);
+  return Number.isFinite(v) ? v : null;
+};
+const wanted = {
+  scene: params.get('scene'),
+  width: intParam('width'),
+  height: intParam('height'),
+  max_depth: intParam('depth'),
+};
+
+const limits = { max_width: 1920, max_height: 1080, max_depth: 16 };
+let currentScene = null; // the last `scene` message
+let lastFrame = null;    // the last `frame` message (its camera goes into render jobs)
+let openPending = false; // an `open` sent and not yet answered by `scene` or `error`
+let sceneJustChanged = false; // a `scene` message came and no frame since
+
+const viewer = new Viewer(ui.canvas);
+const stats = new Stats(
+  {
+    rate: $('stat-rate'),
+    spp: $('stat-spp'),
+    elapsed: $('stat-elapsed'),
+    error: $('stat-error'),
+    mode: $('stat-mode'),
+  },
+  $('error-plot'),
+);
+
+const connection = new Connection(defaultSocketUrl(location), {
+  onStatus: showStatus,
+  onMessage: handleMessage,
+  onFrame: handleFrame,
+});
+
+const controls = new Controls(
+  ui.canvas,
+  (fields) => connection.send({ type: 'move', ...fields }),
+  () => {
+    const v = Number.parseFloat(ui.speed.value);
+    return Number.isFinite(v) && v > 0 ? v : 1;
+  },
+);
+
+// ---- status banner ------------------------------------------------------------------------
+
+let countdown = null; // interval that counts down to the next reconnect attempt
+
+function showStatus(status) {
+  clearInterval(countdown);
+  ui.status.dataset.state = status.state;
+  document.body.dataset.connection = status.state; // style.css dims the stale image
+  controls.enabled = status.state === 'open';
+  switch (status.state) {
+    case 'connecting':
+      ui.status.textContent = 'connecting…';
+      break;
+    case 'open':
+      ui.status.textContent = 'connected';
+      break;
+    case 'retrying': {
+      const at = Date.now() + status.retryInMs;
+      const show = () => {
+        const seconds = Math.max(1, Math.ceil((at - Date.now()) / 1000));
+        ui.status.textContent = `${status.reason} — retrying in ${seconds} s`;
+      };
+      show();
+      countdown = setInterval(show, 250);
+      break;
+    }
+    case 'stopped':
+      ui.status.textContent = `${status.reason} — click to reconnect`;
+      break;
+    default:
+      ui.status.textContent = status.state;
+  }
+}
+
+// After an idle timeout the page waits for the user: any click or key brings the session back.
+function reconnectIfStopped() {
+  if (ui.status.dataset.state === 'stopped') connection.reconnectNow();
+}
+ui.status.addEventListener('click', reconnectIfStopped);
+window.addEventListener('pointerdown', reconnectIfStopped);
+window.addEventListener('keydown', reconnectIfStopped);
+
+// ---- server messages ----------------------------------------------------------------------
+
+function handleMessage(msg) {
+  switch (msg.type) {
+    case 'hello':
+      onHello(msg);
+      break;
+    case 'scene':
+      onScene(msg);
+      break;
+    case 'error':
+      showError(msg.field, msg.message);
+      if (openPending) {
+        // A failed `open` leaves the old scene in place: stop asking for the new one (a
+        // reconnect would ask again) and put the picker back to match.
+        openPending = false;
+        wanted.scene = currentScene ? currentScene.name : null;
+        if (currentScene) {
+          selectScene(currentScene.name);
+          applyWantedSettings(currentScene); // skipped while the open was pending
+        }
+      }
+      break;
+    default:
+      // Unknown types are ignored, so a newer server can add messages without breaking us.
+      break;
+  }
+}
+
+function onHello(msg) {
+  connection.resetBackoff();
+  ui.status.textContent = msg.session !== undefined ? `connected · session ${msg.session}` : 'connected';
+  Object.assign(limits, msg.limits || {});
+  ui.width.max = String(limits.max_width);
+  ui.height.max = String(limits.max_height);
+
+  const scenes = Array.isArray(msg.scenes) ? msg.scenes : [];
+  ui.picker.replaceChildren(...scenes.map((name) => new Option(name, name)));
+  ui.picker.disabled = scenes.length === 0;
+  viewer.reset(); // a new session numbers its frames afresh
+  lastFrame = null;
+
+  // The new session starts on the default scene: ask again for what the user had chosen.
+  if (wanted.scene) openScene(wanted.scene);
+}
+
+function openScene(name) {
+  wanted.scene = name;
+  openPending = connection.send({ type: 'open', scene: name });
+}
+
+function onScene(msg) {
+  currentScene = msg;
+  sceneJustChanged = true;
+  if (msg.name === wanted.scene) openPending = false;
+  stats.reset();
+  clearErrors();
+  selectScene(msg.name);
+  const where = [msg.geometry, msg.manifold].filter((v) => v && v !== 'none').join(', ');
+  ui.title.textContent = where ? `${msg.name} — ${where}` : msg.name;
+
+  // A fresh session's default scene, with our own `open` already on its way: its settings would
+  // be replaced at once, so don't send any.
+  if (!(openPending && msg.name !== wanted.scene)) applyWantedSettings(msg);
+}
+
+// Opening a scene brings that scene's own render settings; re-apply the user's, if any.
+function applyWantedSettings(msg) {
+  // URL parameters are unchecked until the server's limits are known.
+  if (wanted.width !== null) wanted.width = clamp(wanted.width, 16, limits.max_width);
+  if (wanted.height !== null) wanted.height = clamp(wanted.height, 16, limits.max_height);
+  if (wanted.max_depth !== null) wanted.max_depth = clamp(wanted.max_depth, 0, limits.max_depth);
+  const settings = {};
+  if (wanted.width !== null && wanted.width !== msg.width) settings.width = wanted.width;
+  if (wanted.height !== null && wanted.height !== msg.height) settings.height = wanted.height;
+  if (wanted.max_depth !== null && wanted.max_depth !== msg.max_depth) settings.max_depth = wanted.max_depth;
+  if (Object.keys(settings).length > 0) connection.send({ type: 'settings', ...settings });
+
+  ui.width.value = String(wanted.width ?? msg.width);
+  ui.height.value = String(wanted.height ?? msg.height);
+  ui.depth.value = String(wanted.max_depth ?? msg.max_depth);
+}
+
+function selectScene(name) {
+  // `name` is a bundled name when the scene came from the picker; otherwise leave the picker be.
+  if ([...ui.picker.options].some((o) => o.value === name)) ui.picker.value = name;
+}
+
+function handleFrame(meta, jpeg) {
+  // One frame of the old scene may still arrive after the `scene` message (it was on its way
+  // when the scene changed); it continues the old accumulation instead of starting anew. Drop
+  // it rather than flash the old image and its numbers. At most one frame is in flight, so
+  // at most one is dropped.
+  if (sceneJustChanged) {
+    sceneJustChanged = false;
+    if (lastFrame && meta.spp > lastFrame.spp && meta.elapsed > lastFrame.elapsed) return;
+  }
+  lastFrame = meta;
+  viewer.show(meta, jpeg);
+  stats.update(meta);
+}
+
+// ---- errors -------------------------------------------------------------------------------
+
+function showError(field, message) {
+  const item = document.createElement('div');
+  const dismiss = document.createElement('button');
+  dismiss.type = 'button';
+  dismiss.textContent = '×';
+  dismiss.title = 'Dismiss';
+  dismiss.addEventListener('click', () => {
+    item.remove();
+    ui.errors.hidden = ui.errors.childElementCount === 0;
+  });
+  item.append(dismiss);
+  if (field) {
+    const code = document.createElement('code');
+    code.textContent = field;
+    item.append(code, ': ');
+  }
+  item.append(message || 'unknown error');
+  ui.errors.append(item);
+  while (ui.errors.childElementCount > MAX_ERRORS_SHOWN) ui.errors.firstElementChild.remove();
+  ui.errors.hidden = false;
+}
+
+function clearErrors() {
+  ui.errors.replaceChildren();
+  ui.errors.hidden = true;
+}
+
+// ---- panel --------------------------------------------------------------------------------
+
+ui.picker.addEventListener('change', () => {
+  openScene(ui.picker.value);
+  // Hand the keyboard back to the view, so WASD moves the camera rather than the picker.
+  ui.canvas.focus();
+});
+
+// Reads a number field, clamped to its range; writes the clamped value back so the field
+// shows what was sent.
+function readInt(input, min, max) {
+  const v = Number.parseInt(input.value, 10);
+  if (!Number.isFinite(v)) return null;
+  const clamped = clamp(v, min, max);
+  input.value = String(clamped);
+  return clamped;
+}
+
+function sendSettings(field, value) {
+  if (value === null) return;
+  wanted[field] = value;
+  connection.send({ type: 'settings', [field]: value });
+}
+ui.width.addEventListener('change', () => sendSettings('width', readInt(ui.width, 16, limits.max_width)));
+ui.height.addEventListener('change', () => sendSettings('height', readInt(ui.height, 16, limits.max_height)));
+ui.depth.addEventListener('change', () => sendSettings('max_depth', readInt(ui.depth, 0, limits.max_depth)));
+
+// Render jobs (POST /api/jobs) render the current view offline at full quality. Servers without
+// the jobs API answer 404 (or 405 for a path that only serves files).
+ui.jobButton.addEventListener('click', async () => {
+  const job = {
+    scene: currentScene?.name ?? wanted.scene ?? null, // what is rendering now
+    camera: lastFrame?.camera ?? null,
+    width: Number.parseInt(ui.width.value, 10),
+    height: Number.parseInt(ui.height.value, 10),
+    max_depth: Number.parseInt(ui.depth.value, 10),
+  };
+  ui.jobStatus.classList.remove('bad');
+  ui.jobStatus.textContent = 'submitting…';
+  try {
+    const response = await fetch('/api/jobs', {
+      method: 'POST',
+      headers: { 'Content-Type': 'application/json' },
+      body: JSON.stringify(job),
+    });
+    if ([404, 405, 501].includes(response.status)) {
+      ui.jobStatus.classList.add('bad');
+      ui.jobStatus.textContent = 'render jobs not available on this server';
+      return;
+    }
+    const body = await response.json().catch(() => ({}));
+    if (!response.ok) {
+      ui.jobStatus.classList.add('bad');
+      ui.jobStatus.textContent = `render job refused: ${body.message || response.statusText || response.status}`;
+      return;
+    }
+    ui.jobStatus.textContent = body.id !== undefined ? `render job ${body.id} queued` : 'render job queued';
+  } catch {
+    ui.jobStatus.classList.add('bad');
+    ui.jobStatus.textContent = 'render job not sent: server unreachable';
+  }
+});
+
+// For debugging from the console.
+window.geodesic = { connection, viewer, stats, controls, wanted };
+
+connection.connect();
