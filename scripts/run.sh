@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds, and renders the default scene (the paper's Cornell box)
-# to out/cornell-box.png. Extra arguments go to `geodesic render`.
+# Installs what is missing, builds, and starts the render daemon on the default scene (the
+# paper's Cornell box): open http://127.0.0.1:8080/ in a browser. Extra arguments go to
+# `geodesic serve` (e.g. --host 0.0.0.0 --port 9000 --device nvidia).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 bash scripts/build.sh
-mkdir -p out
-./build/geodesic render scenes/cornell-box.json -o out/cornell-box.png "$@"
+exec ./build/geodesic serve "$@"
