@@ -58,6 +58,9 @@ struct RenderService::Impl {
   JpegEncoder encoder;
 
   mutable std::mutex mutex;  // guards everything below and all Vulkan work
+  // Callers waiting for the mutex: the render thread steps aside for them between slices, so
+  // a move, a new scene or /metrics waits at most one slice.
+  mutable std::atomic<int> waiting{0};
   std::condition_variable wake;
   std::map<SessionId, std::unique_ptr<Session>> sessions;
   SessionId next_id = 1;
@@ -81,6 +84,13 @@ struct RenderService::Impl {
     }
     wake.notify_all();
     thread.join();
+  }
+
+  std::unique_lock<std::mutex> lock() const {
+    ++waiting;
+    std::unique_lock<std::mutex> held(mutex);
+    --waiting;
+    return held;
   }
 
   Session& find(SessionId id) {
@@ -120,6 +130,9 @@ struct RenderService::Impl {
     }
     const int w = std::max(16, s.width / divisor);
     const int h = std::max(16, s.height / divisor);
+    // Moving frames also trace at most one bounce: direct light shows the shapes, and the
+    // indirect light comes back once the camera is still.
+    s.renderer->set_max_depth(moving ? std::min(1, s.scene.render.max_depth) : s.scene.render.max_depth);
     s.pose = s.renderer->set_view(s.pose, w, h);
     s.reset_time = Clock::now();
     s.batch = 1;
@@ -144,9 +157,10 @@ struct RenderService::Impl {
       last_served = it->first;
       stats.queue_depth = int(sessions.size()) - 1;
       serve(*it->second);
-      // Let waiting commands (moves, new scenes) in between slices.
+      // Let waiting callers (moves, new scenes, stats) in between slices.
       lock.unlock();
-      std::this_thread::yield();
+      for (int spins = 0; waiting.load() > 0 && spins < 100; ++spins)
+        std::this_thread::sleep_for(std::chrono::microseconds(100));
       lock.lock();
     }
   }
@@ -215,7 +229,7 @@ const ServiceLimits& RenderService::limits() const { return impl_->limits; }
 
 RenderService::SessionId RenderService::open_session(FrameCallback on_frame) {
   Scene scene = load_scene_file(std::filesystem::path(impl_->scene_dir) / "cornell-box.json");
-  std::lock_guard lock(impl_->mutex);
+  auto lock = impl_->lock();
   if (int(impl_->sessions.size()) >= impl_->limits.max_sessions)
     throw std::runtime_error("too many sessions (" + std::to_string(impl_->limits.max_sessions) +
                              " open)");
@@ -230,7 +244,7 @@ RenderService::SessionId RenderService::open_session(FrameCallback on_frame) {
 }
 
 void RenderService::close_session(SessionId id) {
-  std::lock_guard lock(impl_->mutex);
+  auto lock = impl_->lock();
   impl_->sessions.erase(id);  // frees its renderer and buffers
   impl_->stats.sessions = int(impl_->sessions.size());
 }
@@ -240,19 +254,19 @@ SceneInfo RenderService::load_scene(SessionId id, const std::string& name) {
   if (std::find(names.begin(), names.end(), name) == names.end())
     throw SceneError("scene: unknown bundled scene \"" + name + "\"");
   Scene scene = load_scene_file(std::filesystem::path(impl_->scene_dir) / (name + ".json"));
-  std::lock_guard lock(impl_->mutex);
+  auto lock = impl_->lock();
   return impl_->install(impl_->find(id), std::move(scene), name);
 }
 
 SceneInfo RenderService::load_scene_document(SessionId id, const nlohmann::ordered_json& doc) {
   Scene scene = parse_scene(doc, impl_->scene_dir);
   std::string name = scene.name.empty() ? "document" : scene.name;
-  std::lock_guard lock(impl_->mutex);
+  auto lock = impl_->lock();
   return impl_->install(impl_->find(id), std::move(scene), std::move(name));
 }
 
 void RenderService::move_camera(SessionId id, const CameraMotion& motion) {
-  std::lock_guard lock(impl_->mutex);
+  auto lock = impl_->lock();
   Session& s = impl_->find(id);
   s.pose = apply_motion(s.scene.geometry, s.pose, motion);
   s.last_move = Clock::now();
@@ -267,7 +281,7 @@ SceneInfo RenderService::apply_settings(SessionId id, const SessionSettings& set
     throw std::invalid_argument("height: must be in [16, " + std::to_string(l.max_height) + "]");
   if (settings.max_depth != -1 && (settings.max_depth < 0 || settings.max_depth > l.max_depth))
     throw std::invalid_argument("max_depth: must be in [0, " + std::to_string(l.max_depth) + "]");
-  std::lock_guard lock(impl_->mutex);
+  auto lock = impl_->lock();
   Session& s = impl_->find(id);
   const int width = settings.width ? settings.width : s.width;
   const int height = settings.height ? settings.height : s.height;
@@ -291,7 +305,7 @@ SceneInfo RenderService::apply_settings(SessionId id, const SessionSettings& set
 }
 
 ServiceStats RenderService::stats() const {
-  std::lock_guard lock(impl_->mutex);
+  auto lock = impl_->lock();
   return impl_->stats;
 }
 
