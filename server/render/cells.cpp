@@ -69,12 +69,6 @@ std::vector<Cell> tesseract_atlas() {
 
 }  // namespace
 
-bool Cell::contains(const Vec3& x, double tolerance) const {
-  for (const CellFace& f : faces)
-    if (dot(f.normal, x) > f.delta + tolerance) return false;
-  return true;
-}
-
 CameraPlacement place_camera(GeometryKind k, const std::vector<Cell>& cells, const Mat4& pose) {
   CameraPlacement out{model::reorthonormalize(k, pose), 0};
   if (cells.size() == 1) {

@@ -27,9 +27,6 @@ struct Cell {
   Mat4 chart_isometry;  // model -> this cell's frame; chart = (P p).xyz / (P p).w
   int face_begin = 0;   // global index of the first face
   std::vector<CellFace> faces;
-
-  // Whether the chart point x lies in the cell (within tolerance).
-  bool contains(const Vec3& x, double tolerance) const;
 };
 
 std::vector<Cell> build_cells(const Scene& scene);
