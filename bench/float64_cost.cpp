@@ -1,10 +1,7 @@
 // What double precision costs on the device: the sphere-intersection arithmetic of
 // bench/float64_cost.comp, compiled for float and for double, run over the same 10^6 cases
 // (64 intersections each); prints the best of five timed runs and the ratio (docs/numerics.md).
-// A device of its own, because it needs the shaderFloat64 feature the renderer never enables.
-//   float64_cost [--device SUBSTRING] [--invocations N] [--repeats R]
-#include <vulkan/vulkan.h>
-
+//   float64_cost [--device NAME|INDEX] [--invocations N] [--repeats R]
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -14,12 +11,12 @@
 #include <string>
 #include <vector>
 
+#include "render/gpu_buffer.h"
+#include "render/vulkan_context.h"
+
 namespace {
 
-void check(VkResult result, const char* what) {
-  if (result != VK_SUCCESS)
-    throw std::runtime_error(std::string(what) + " failed (" + std::to_string(result) + ")");
-}
+using namespace geodesic;
 
 std::vector<uint32_t> read_spirv(const std::string& path) {
   std::ifstream file(path, std::ios::binary | std::ios::ate);
@@ -35,75 +32,27 @@ struct Push {
   uint32_t repeats;
 };
 
-// One compute queue on the first device whose name contains `want` and has shaderFloat64,
-// a host-visible output buffer, and one pipeline per precision.
+// The kernel's one storage buffer (a float per invocation) and one pipeline per precision, on
+// the renderer's device (which enables shaderFloat64 where the device has it).
 class Bench {
  public:
-  Bench(const std::string& want, uint32_t invocations) : invocations_(invocations) {
-    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
-    app.apiVersion = VK_API_VERSION_1_2;
-    VkInstanceCreateInfo instance_info{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
-    instance_info.pApplicationInfo = &app;
-    check(vkCreateInstance(&instance_info, nullptr, &instance_), "vkCreateInstance");
-    uint32_t n = 0;
-    vkEnumeratePhysicalDevices(instance_, &n, nullptr);
-    std::vector<VkPhysicalDevice> devices(n);
-    vkEnumeratePhysicalDevices(instance_, &n, devices.data());
-    for (VkPhysicalDevice d : devices) {
-      VkPhysicalDeviceProperties props;
-      VkPhysicalDeviceFeatures features;
-      vkGetPhysicalDeviceProperties(d, &props);
-      vkGetPhysicalDeviceFeatures(d, &features);
-      if (features.shaderFloat64 && std::string(props.deviceName).find(want) != std::string::npos) {
-        physical_ = d;
-        name_ = props.deviceName;
-        break;
-      }
-    }
-    if (!physical_) throw std::runtime_error("no device named '" + want + "' with shaderFloat64");
-    vkGetPhysicalDeviceQueueFamilyProperties(physical_, &n, nullptr);
-    std::vector<VkQueueFamilyProperties> families(n);
-    vkGetPhysicalDeviceQueueFamilyProperties(physical_, &n, families.data());
-    while (family_ < n && !(families[family_].queueFlags & VK_QUEUE_COMPUTE_BIT)) ++family_;
-
-    const float priority = 1;
-    VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
-    queue_info.queueFamilyIndex = family_;
-    queue_info.queueCount = 1;
-    queue_info.pQueuePriorities = &priority;
-    VkPhysicalDeviceFeatures enabled{};
-    enabled.shaderFloat64 = VK_TRUE;
-    VkDeviceCreateInfo device_info{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO};
-    device_info.queueCreateInfoCount = 1;
-    device_info.pQueueCreateInfos = &queue_info;
-    device_info.pEnabledFeatures = &enabled;
-    check(vkCreateDevice(physical_, &device_info, nullptr, &device_), "vkCreateDevice");
-    vkGetDeviceQueue(device_, family_, 0, &queue_);
-    create_buffer();
+  Bench(VulkanContext& ctx, uint32_t invocations)
+      : ctx_(ctx),
+        invocations_(invocations),
+        output_(ctx, invocations * sizeof(float), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT) {
+    if (!ctx.description().float64)
+      throw std::runtime_error(ctx.description().name + " has no shaderFloat64");
     create_layout();
-    VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-    pool_info.queueFamilyIndex = family_;
-    check(vkCreateCommandPool(device_, &pool_info, nullptr, &command_pool_), "vkCreateCommandPool");
-    VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    check(vkCreateFence(device_, &fence_info, nullptr, &fence_), "vkCreateFence");
   }
 
   ~Bench() {
-    vkDeviceWaitIdle(device_);
-    for (VkPipeline p : pipelines_) vkDestroyPipeline(device_, p, nullptr);
-    vkDestroyFence(device_, fence_, nullptr);
-    vkDestroyCommandPool(device_, command_pool_, nullptr);
-    vkDestroyDescriptorPool(device_, descriptor_pool_, nullptr);
-    vkDestroyPipelineLayout(device_, pipeline_layout_, nullptr);
-    vkDestroyDescriptorSetLayout(device_, set_layout_, nullptr);
-    vkUnmapMemory(device_, memory_);
-    vkDestroyBuffer(device_, buffer_, nullptr);
-    vkFreeMemory(device_, memory_, nullptr);
-    vkDestroyDevice(device_, nullptr);
-    vkDestroyInstance(instance_, nullptr);
+    VkDevice device = ctx_.device();
+    vkDeviceWaitIdle(device);
+    for (VkPipeline p : pipelines_) vkDestroyPipeline(device, p, nullptr);
+    vkDestroyDescriptorPool(device, descriptor_pool_, nullptr);
+    vkDestroyPipelineLayout(device, pipeline_layout_, nullptr);
+    vkDestroyDescriptorSetLayout(device, set_layout_, nullptr);
   }
-
-  const std::string& name() const { return name_; }
 
   VkPipeline pipeline(const std::string& spirv_path) {
     const std::vector<uint32_t> code = read_spirv(spirv_path);
@@ -111,7 +60,8 @@ class Bench {
     module_info.codeSize = code.size() * 4;
     module_info.pCode = code.data();
     VkShaderModule module;
-    check(vkCreateShaderModule(device_, &module_info, nullptr, &module), "vkCreateShaderModule");
+    vk_check(vkCreateShaderModule(ctx_.device(), &module_info, nullptr, &module),
+             "vkCreateShaderModule");
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
@@ -119,78 +69,41 @@ class Bench {
     info.stage.pName = "main";
     info.layout = pipeline_layout_;
     VkPipeline pipeline;
-    check(vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
-          "vkCreateComputePipelines");
-    vkDestroyShaderModule(device_, module, nullptr);
+    vk_check(vkCreateComputePipelines(ctx_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline),
+             "vkCreateComputePipelines");
+    vkDestroyShaderModule(ctx_.device(), module, nullptr);
     pipelines_.push_back(pipeline);
     return pipeline;
   }
 
   // Seconds for one dispatch over every invocation, and the sum of the outputs.
   std::pair<double, double> run(VkPipeline pipeline, uint32_t repeats) {
-    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-    alloc.commandPool = command_pool_;
-    alloc.commandBufferCount = 1;
-    VkCommandBuffer cmd;
-    check(vkAllocateCommandBuffers(device_, &alloc, &cmd), "vkAllocateCommandBuffers");
-    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-    vkBeginCommandBuffer(cmd, &begin);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set_, 0,
-                            nullptr);
-    const Push push{invocations_, repeats};
-    vkCmdPushConstants(cmd, pipeline_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push), &push);
-    vkCmdDispatch(cmd, (invocations_ + 63) / 64, 1, 1);
-    vkEndCommandBuffer(cmd);
-    VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-    submit.commandBufferCount = 1;
-    submit.pCommandBuffers = &cmd;
     const auto start = std::chrono::steady_clock::now();
-    check(vkQueueSubmit(queue_, 1, &submit, fence_), "vkQueueSubmit");
-    check(vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+    ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
+      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline);
+      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_layout_, 0, 1, &set_,
+                              0, nullptr);
+      const Push push{invocations_, repeats};
+      vkCmdPushConstants(cmd, pipeline_layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(push),
+                         &push);
+      vkCmdDispatch(cmd, (invocations_ + 63) / 64, 1, 1);
+    });
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    vkResetFences(device_, 1, &fence_);
-    vkFreeCommandBuffers(device_, command_pool_, 1, &cmd);
+    const auto* values = static_cast<const float*>(output_.mapped());
     double sum = 0;
-    for (uint32_t i = 0; i < invocations_; ++i) sum += mapped_[i];
+    for (uint32_t i = 0; i < invocations_; ++i) sum += values[i];
     return {seconds, sum};
   }
 
  private:
-  void create_buffer() {
-    VkBufferCreateInfo info{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-    info.size = invocations_ * sizeof(float);
-    info.usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-    check(vkCreateBuffer(device_, &info, nullptr, &buffer_), "vkCreateBuffer");
-    VkMemoryRequirements req;
-    vkGetBufferMemoryRequirements(device_, buffer_, &req);
-    VkPhysicalDeviceMemoryProperties props;
-    vkGetPhysicalDeviceMemoryProperties(physical_, &props);
-    const VkMemoryPropertyFlags wanted =
-        VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-    uint32_t type = 0;
-    while (type < props.memoryTypeCount &&
-           !((req.memoryTypeBits & (1u << type)) &&
-             (props.memoryTypes[type].propertyFlags & wanted) == wanted))
-      ++type;
-    VkMemoryAllocateInfo alloc{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    alloc.allocationSize = req.size;
-    alloc.memoryTypeIndex = type;
-    check(vkAllocateMemory(device_, &alloc, nullptr, &memory_), "vkAllocateMemory");
-    check(vkBindBufferMemory(device_, buffer_, memory_, 0), "vkBindBufferMemory");
-    check(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, reinterpret_cast<void**>(&mapped_)),
-          "vkMapMemory");
-  }
-
   void create_layout() {
     VkDescriptorSetLayoutBinding binding{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
                                          VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
     VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
     set_info.bindingCount = 1;
     set_info.pBindings = &binding;
-    check(vkCreateDescriptorSetLayout(device_, &set_info, nullptr, &set_layout_),
+    vk_check(vkCreateDescriptorSetLayout(ctx_.device(), &set_info, nullptr, &set_layout_),
           "vkCreateDescriptorSetLayout");
     const VkPushConstantRange range{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(Push)};
     VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
@@ -198,45 +111,36 @@ class Bench {
     layout_info.pSetLayouts = &set_layout_;
     layout_info.pushConstantRangeCount = 1;
     layout_info.pPushConstantRanges = &range;
-    check(vkCreatePipelineLayout(device_, &layout_info, nullptr, &pipeline_layout_),
+    vk_check(vkCreatePipelineLayout(ctx_.device(), &layout_info, nullptr, &pipeline_layout_),
           "vkCreatePipelineLayout");
     const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1};
     VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
     pool_info.maxSets = 1;
     pool_info.poolSizeCount = 1;
     pool_info.pPoolSizes = &size;
-    check(vkCreateDescriptorPool(device_, &pool_info, nullptr, &descriptor_pool_),
+    vk_check(vkCreateDescriptorPool(ctx_.device(), &pool_info, nullptr, &descriptor_pool_),
           "vkCreateDescriptorPool");
     VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
     alloc.descriptorPool = descriptor_pool_;
     alloc.descriptorSetCount = 1;
     alloc.pSetLayouts = &set_layout_;
-    check(vkAllocateDescriptorSets(device_, &alloc, &set_), "vkAllocateDescriptorSets");
-    const VkDescriptorBufferInfo buffer{buffer_, 0, VK_WHOLE_SIZE};
+    vk_check(vkAllocateDescriptorSets(ctx_.device(), &alloc, &set_), "vkAllocateDescriptorSets");
+    const VkDescriptorBufferInfo buffer{output_.handle(), 0, VK_WHOLE_SIZE};
     VkWriteDescriptorSet write{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     write.dstSet = set_;
     write.descriptorCount = 1;
     write.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     write.pBufferInfo = &buffer;
-    vkUpdateDescriptorSets(device_, 1, &write, 0, nullptr);
+    vkUpdateDescriptorSets(ctx_.device(), 1, &write, 0, nullptr);
   }
 
+  VulkanContext& ctx_;
   uint32_t invocations_;
-  std::string name_;
-  VkInstance instance_ = VK_NULL_HANDLE;
-  VkPhysicalDevice physical_ = VK_NULL_HANDLE;
-  uint32_t family_ = 0;
-  VkDevice device_ = VK_NULL_HANDLE;
-  VkQueue queue_ = VK_NULL_HANDLE;
-  VkBuffer buffer_ = VK_NULL_HANDLE;
-  VkDeviceMemory memory_ = VK_NULL_HANDLE;
-  float* mapped_ = nullptr;
+  GpuBuffer output_;
   VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
   VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
   VkDescriptorPool descriptor_pool_ = VK_NULL_HANDLE;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
-  VkCommandPool command_pool_ = VK_NULL_HANDLE;
-  VkFence fence_ = VK_NULL_HANDLE;
   std::vector<VkPipeline> pipelines_;
 };
 
@@ -252,9 +156,10 @@ int main(int argc, char** argv) {
     else if (a == "--repeats" && i + 1 < argc) repeats = std::stoul(argv[++i]);
   }
   try {
-    Bench bench(device, invocations);
+    VulkanContext ctx(device);
+    Bench bench(ctx, invocations);
     const double intersections = double(invocations) * repeats;
-    std::printf("%s: %.3g sphere intersections per dispatch, best of 5\n", bench.name().c_str(),
+    std::printf("%s: %.3g sphere intersections per dispatch, best of 5\n", ctx.description().name.c_str(),
                 intersections);
     double best[2] = {1e300, 1e300};
     const char* precisions[2] = {"float", "double"};

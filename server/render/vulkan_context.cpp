@@ -193,6 +193,7 @@ VulkanContext::VulkanContext(const std::string& selector) {
   if (!v12.bufferDeviceAddress || !accel.accelerationStructure)
     throw VulkanError(description_.name + ": lacks bufferDeviceAddress/accelerationStructure");
   description_.ray_query = description_.ray_query && ray_query.rayQuery;
+  description_.float64 = features.features.shaderFloat64;
   description_.ray_tracing_pipeline =
       description_.ray_tracing_pipeline && pipeline.rayTracingPipeline;
 
@@ -200,6 +201,7 @@ VulkanContext::VulkanContext(const std::string& selector) {
   VkPhysicalDeviceFeatures2 enabled = features;
   enabled.features = VkPhysicalDeviceFeatures{};
   enabled.features.shaderInt64 = features.features.shaderInt64;
+  enabled.features.shaderFloat64 = features.features.shaderFloat64;  // bench/float64_cost
 
   float priority = 1.0f;
   VkDeviceQueueCreateInfo queue_info{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};

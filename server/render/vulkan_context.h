@@ -30,6 +30,7 @@ struct DeviceDescription {
   bool acceleration_structure = false;
   bool ray_tracing_pipeline = false;
   bool ray_query = false;
+  bool float64 = false;  // shaderFloat64
   std::vector<std::string> missing;  // required extensions/features it lacks
 
   bool can_ray_trace() const { return missing.empty() && (ray_tracing_pipeline || ray_query); }
