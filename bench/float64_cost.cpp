@@ -2,6 +2,7 @@
 // bench/float64_cost.comp, compiled for float and for double, run over the same 10^6 cases
 // (64 intersections each); prints the best of five timed runs and the ratio (docs/numerics.md).
 //   float64_cost [--device NAME|INDEX] [--invocations N] [--repeats R]
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
