@@ -40,15 +40,22 @@ int integer_in(const Json& message, const std::string& key, int min, int max) {
 }
 
 OpenRequest parse_open(const Json& message) {
-  reject_unknown_fields(message, {"scene", "document"});
-  const bool has_scene = message.contains("scene"), has_document = message.contains("document");
-  if (has_scene == has_document)
-    throw ProtocolError(has_scene ? "document" : "scene",
-                        "give either scene (a bundled name) or document (an inline scene)");
+  reject_unknown_fields(message, {"scene", "document", "generators"});
+  const int given = int(message.contains("scene")) + int(message.contains("document")) +
+                    int(message.contains("generators"));
+  if (given != 1)
+    throw ProtocolError(!given                          ? "scene"
+                        : message.contains("generators") ? "generators"
+                                                         : "document",
+                        "give one of scene (a bundled name), document (an inline scene) or "
+                        "generators (the text of a .gen file)");
   OpenRequest open;
-  if (has_scene) {
+  if (message.contains("scene")) {
     if (!message["scene"].is_string()) throw ProtocolError("scene", "must be a string");
     open.scene = message["scene"].get<std::string>();
+  } else if (message.contains("generators")) {
+    if (!message["generators"].is_string()) throw ProtocolError("generators", "must be a string");
+    open.generators = message["generators"].get<std::string>();
   } else {
     if (!message["document"].is_object()) throw ProtocolError("document", "must be an object");
     open.document = message["document"];
@@ -113,6 +120,8 @@ ProtocolError service_error(const std::exception& error, const OpenRequest* open
     reason = what.substr(colon + 2);
   }
   if (open && open->scene) return ProtocolError("scene", path == "scene" ? reason : what);
+  // Generator errors name the matrix and line in the text: keep the whole message.
+  if (open && open->generators) return ProtocolError("generators", what);
   if (open) {
     if (path.empty() || path == "(root)") return ProtocolError("document", reason);
     return ProtocolError(path[0] == '[' ? "document" + path : "document." + path, reason);

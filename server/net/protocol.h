@@ -19,10 +19,12 @@
 
 namespace geodesic::net {
 
-// `open`: exactly one of a bundled scene name or an inline document.
+// `open`: exactly one of a bundled scene name, an inline document, or generator text (a
+// Curved Spaces .gen file or SnapPy pairing matrices: the default scene inside that space).
 struct OpenRequest {
   std::optional<std::string> scene;
   std::optional<nlohmann::ordered_json> document;
+  std::optional<std::string> generators;
 };
 
 using ClientMessage = std::variant<OpenRequest, CameraMotion, SessionSettings>;

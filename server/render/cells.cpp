@@ -28,6 +28,13 @@ bool same(const Vec4& a, const Vec4& b) {
          1e-9;
 }
 
+bool is_identity(const Mat4& g) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j)
+      if (g.m[i][j] != (i == j ? 1.0 : 0.0)) return false;
+  return true;
+}
+
 std::vector<Cell> tesseract_atlas() {
   std::vector<Cell> cells;
   for (int axis = 0; axis < 4; ++axis)
@@ -82,18 +89,42 @@ CameraPlacement place_camera(GeometryKind k, const std::vector<Cell>& cells, con
     }
     return out;
   }
-  double best = -2;
-  for (uint32_t c = 0; c < cells.size(); ++c) {
-    const double w = (cells[c].chart_isometry * (out.pose * model::origin())).w;
-    if (w > best) {
-      best = w;
-      out.cell = c;
+  // The cell charted nearest to the camera; in a domain cut into pieces, a camera beyond the
+  // domain's boundary (a face whose pairing is not the identity) is carried back in first.
+  for (int step = 0; step < 64; ++step) {
+    double best = -2;
+    for (uint32_t c = 0; c < cells.size(); ++c) {
+      const double w = (cells[c].chart_isometry * (out.pose * model::origin())).w;
+      if (w > best) {
+        best = w;
+        out.cell = c;
+      }
     }
+    const Cell& cell = cells[out.cell];
+    const Vec3 x = model::chart(k, cell.chart_isometry * (out.pose * model::origin()));
+    const CellFace* outside = nullptr;
+    for (const CellFace& f : cell.faces)
+      if (dot(f.normal, x) > f.delta && !is_identity(f.pairing)) outside = &f;
+    if (!outside) break;
+    out.pose = model::reorthonormalize(k, outside->pairing * out.pose);
   }
   return out;
 }
 
 std::vector<Cell> build_cells(const Scene& scene) {
+  // A domain cut into pieces charted apart (scene/chart_atlas.h): one cell per piece.
+  if (!scene.manifold.pieces.empty()) {
+    std::vector<Cell> cells;
+    int face_begin = 0;
+    for (const DomainPiece& piece : scene.manifold.pieces) {
+      Cell cell{piece.chart_isometry, face_begin, {}};
+      for (const PieceFace& f : piece.faces)
+        cell.faces.push_back({f.normal, f.delta, f.pairing, f.target, f.partner});
+      face_begin += static_cast<int>(cell.faces.size());
+      cells.push_back(std::move(cell));
+    }
+    return cells;
+  }
   if (!scene.manifold.faces.empty()) {
     Cell cell{Mat4::identity(), 0, {}};
     for (const DomainFace& f : scene.manifold.faces)

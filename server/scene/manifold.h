@@ -20,11 +20,31 @@ struct DomainFace {
   int partner = 0;
 };
 
+// A spherical domain that no single gnomonic chart holds (scene/chart_atlas.h) is cut into
+// pieces, each a convex polyhedron in the chart centred on `centre`; the renderer makes each a
+// cell (render/cells.h). A ray leaving piece p through face f continues as (g q, g v) in piece
+// `target`, entering through face `partner` (global index: pieces number faces in order).
+struct PieceFace {
+  Vec3 normal;  // outward unit normal in the piece's chart
+  double delta = 0;
+  Mat4 pairing;  // identity between pieces of the domain, a group element across its boundary
+  int target = 0;
+  int partner = 0;
+};
+struct DomainPiece {
+  Mat4 chart_isometry;  // model -> the piece's frame (its centre to the origin)
+  std::vector<PieceFace> faces;
+  Polyhedron polyhedron;  // in the piece's chart
+};
+
 struct Manifold {
   std::string name = "none";      // "none" for the whole space
   std::vector<DomainFace> faces;  // empty: no quotient
   int max_crossings = 16;         // face crossings per ray before it is dropped
   Polyhedron domain;              // chart vertices, edges (vertex index pairs), face polygons
+  // Empty, or the domain cut into pieces charted apart (then `domain` is empty and `faces`
+  // are the domain's faces as planes of the origin's chart, which holds only part of them).
+  std::vector<DomainPiece> pieces;
 };
 
 // The cube [-h, h]^3 with opposite faces glued by translations by 2h (the paper's 3-torus).

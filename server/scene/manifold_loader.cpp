@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "scene/generator_manifold.h"
+
 namespace geodesic {
 namespace {
 
@@ -35,7 +37,8 @@ void require_geometry(const JsonNode& type, const std::string& name, GeometryKin
 
 }  // namespace
 
-Manifold read_manifold(const JsonNode& node, GeometryKind kind) {
+Manifold read_manifold(const JsonNode& node, GeometryKind kind,
+                       const std::filesystem::path& base_dir) {
   if (node.value().is_null()) return {};
   if (!node.value().is_object()) node.fail("must be null or an object");
   const JsonNode type = node.at("type");
@@ -59,10 +62,13 @@ Manifold read_manifold(const JsonNode& node, GeometryKind kind) {
     node.expect_object({"type", "faces", "max_crossings"});
     m = make_generic(kind, read_faces(node.at("faces")), kFileTolerance);
     validate_manifold(kind, m, kFileTolerance);
+  } else if (name == "generators" || name == "lens") {
+    m = read_generator_manifold(node, name, kind, base_dir).manifold;
   } else {
     type.fail("unknown manifold type \"" + name +
               "\" (expected \"none\", \"torus\", \"mirrored-dodecahedron\", "
-              "\"poincare-dodecahedral\", \"seifert-weber\" or \"generic\")");
+              "\"poincare-dodecahedral\", \"seifert-weber\", \"generic\", \"generators\" or "
+              "\"lens\")");
   }
   if (const auto n = node.find("max_crossings")) m.max_crossings = read_int(*n, 0, 64);
   return m;

@@ -37,6 +37,11 @@ TEST(Protocol, ParsesEachClientMessage) {
   ASSERT_TRUE(inline_open.document);
   EXPECT_EQ((*inline_open.document)["geometry"], "euclidean");
 
+  const auto generators = std::get<OpenRequest>(
+      parse_client_message(R"({"type":"open","generators":"# a .gen file"})", limits));
+  EXPECT_EQ(generators.generators, "# a .gen file");
+  EXPECT_FALSE(generators.scene || generators.document);
+
   const auto move = std::get<CameraMotion>(
       parse_client_message(R"({"type":"move","forward":-0.5,"yaw":10,"roll":1e-3})", limits));
   EXPECT_EQ(move.forward, -0.5);
@@ -67,6 +72,8 @@ TEST(Protocol, NamesTheFieldOfABadMessage) {
   EXPECT_EQ(field_of_error(R"({"type":"open","scene":7})"), "scene");
   EXPECT_EQ(field_of_error(R"({"type":"open","scene":"a","document":{}})"), "document");
   EXPECT_EQ(field_of_error(R"({"type":"open","document":[]})"), "document");
+  EXPECT_EQ(field_of_error(R"({"type":"open","generators":7})"), "generators");
+  EXPECT_EQ(field_of_error(R"({"type":"open","scene":"a","generators":"1"})"), "generators");
 }
 
 TEST(Protocol, MapsServiceErrorsToPathsInTheMessage) {

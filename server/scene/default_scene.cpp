@@ -1,0 +1,82 @@
+#include "scene/default_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include "scene/generator_file.h"
+
+namespace geodesic {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json vec(const Vec3& v) { return Json::array({v.x, v.y, v.z}); }
+
+// Diffuse plus specular stays below 1 (energy conservation).
+Json material(const Vec3& colour) {
+  return {{"ambient", vec(colour)}, {"diffuse", vec(colour)}, {"specular", 0.3}, {"shininess", 30}};
+}
+
+// Enough face crossings to see a few copies of the domain: in S3 a ray returns after 2 pi,
+// about pi / inradius domains; E3 and H3 images shrink (or fade) with distance.
+int crossings_for(GeometryKind kind, double inradius) {
+  if (kind != GeometryKind::Spherical) return 24;
+  return std::clamp(static_cast<int>(std::ceil(std::numbers::pi / inradius)) + 8, 16, 64);
+}
+
+}  // namespace
+
+Json default_scene_document(const std::string& title, GeometryKind kind, Json manifold,
+                            const DirichletDomain& domain) {
+  const double r = domain.inradius;
+  // A domain cut into pieces (chart_atlas.h) has no edges in one chart to draw, and a ray
+  // crosses the walls between its pieces too.
+  const bool pieces = !domain.manifold.pieces.empty();
+  if (!manifold.contains("max_crossings"))
+    manifold["max_crossings"] = std::min(64, crossings_for(kind, r) * (pieces ? 2 : 1));
+  // Sphere centres at 0.55 r and radii 0.18 r keep every sphere inside the in-ball; the light's
+  // intensity goes with r^2, as its distance to the spheres does (small domains are nearly flat).
+  const Vec3 red = normalize(Vec3{0.5, 0.1, -0.85}) * (0.55 * r);
+  const Vec3 green = normalize(Vec3{-0.6, 0.35, -0.7}) * (0.55 * r);
+  const Vec3 blue = normalize(Vec3{0.1, -0.65, 0.75}) * (0.55 * r);
+  Json objects = Json::array();
+  for (const auto& [name, centre] : {std::pair{"red", red}, {"green", green}, {"blue", blue}})
+    objects.push_back({{"type", "sphere"}, {"material", name}, {"center", vec(centre)},
+                       {"radius", 0.18 * r}});
+  if (!pieces)
+    objects.push_back({{"type", "domain_edges"}, {"material", "edge"}, {"radius", 0.02 * r}});
+  return {
+      {"name", title},
+      {"geometry", geometry_name(kind)},
+      {"manifold", manifold},
+      {"camera", {{"position", vec({0, 0, 0})}, {"look_at", vec({0, 0, -0.5 * r})}, {"fov_y", 80}}},
+      {"materials",
+       {{"edge", {{"ambient", vec({0.85, 0.7, 0.35})}, {"diffuse", vec({0.85, 0.7, 0.35})}}},
+        {"red", material({0.68, 0.13, 0.08})},
+        {"green", material({0.13, 0.6, 0.17})},
+        {"blue", material({0.13, 0.26, 0.68})}}},
+      {"objects", objects},
+      {"lights", Json::array({{{"type", "point"},
+                               {"position", vec(Vec3{0.1, 0.6, 0.2} * r)},
+                               {"intensity", std::min(1.0, 2 * r * r)}}})},
+      {"render",
+       {{"width", 512}, {"height", 512}, {"max_depth", 1}, {"spp", 16}, {"seed", 1u},
+        {"ambient", 0.25}}}};
+}
+
+Json generator_text_scene(const std::string& text, const std::string& source) {
+  const GeneratorSet set = parse_generators(text, source);
+  const DirichletDomain domain = dirichlet_domain(set.kind, set.generators);
+  return default_scene_document(source, set.kind, {{"type", "generators"}, {"text", text}}, domain);
+}
+
+Json generator_file_scene(const std::string& path) {
+  const GeneratorSet set = load_generator_file(path);
+  const DirichletDomain domain = dirichlet_domain(set.kind, set.generators);
+  return default_scene_document(std::filesystem::path(path).stem().string(), set.kind,
+                                {{"type", "generators"}, {"file", path}}, domain);
+}
+
+}  // namespace geodesic

@@ -1,0 +1,240 @@
+#include "scene/dirichlet_domain.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "scene/chart_atlas.h"
+#include "scene/domain_volume.h"
+#include "scene/group_orbit.h"
+#include "scene/plane_clipping.h"
+#include "scene/scene.h"
+
+namespace geodesic {
+namespace {
+
+// Gnomonic chart radius beyond which an S3 domain counts as reaching the horizon: float
+// rays lose too much there (tan 1.45 = 8.2, w = 0.12).
+constexpr double kMaxSphericalCircumradius = 1.45;
+// E3 and H3 spaces are infinite groups: the search radius grows to twice the circumradius,
+// but gives up after this many doublings of the generators' displacement.
+constexpr int kMaxGrowth = 12;
+// Planes of a cell still unbounded after this many are not closing it (make_polyhedron is
+// quartic in the plane count; the scene format allows 64 faces).
+constexpr std::size_t kMaxCuts = 64;
+
+[[noreturn]] void fail(const std::string& reason) { throw SceneError("generators: " + reason); }
+
+// The bisector of the origin and a = g . origin, as a chart plane with the origin inside:
+// E3 a.X = |a|^2 / 2; H3 a.X = a_w - 1 (tanh(d/2) from the origin); S3 a.X = 1 - a_w
+// (tan(d/2)). None in S3 for the antipode, whose bisector is the chart's horizon.
+std::optional<ChartPlane> bisector(GeometryKind kind, const Vec4& a) {
+  const double s = length(a.xyz());
+  if (s < 1e-12) return std::nullopt;
+  const Vec3 n = a.xyz() / s;
+  switch (kind) {
+    case GeometryKind::Hyperbolic: return ChartPlane{n, (a.w - 1) / s};
+    case GeometryKind::Spherical: return ChartPlane{n, (1 - a.w) / s};
+    case GeometryKind::Euclidean: break;
+  }
+  return ChartPlane{n, s / 2};
+}
+
+struct Cut {
+  int element;
+  ChartPlane plane;
+};
+
+struct Cell {
+  std::vector<Cut> cuts;  // only the planes that bound a face
+  Polyhedron polyhedron;
+  double circumradius = INFINITY;
+};
+
+// The Dirichlet cell of the enumerated elements (clip_planes: bisectors nearest first; those
+// beyond the circumradius cannot cut).
+Cell dirichlet_cell(GeometryKind kind, const GroupOrbit& orbit, double tolerance) {
+  std::vector<Cut> candidates;
+  for (int i = 1; i < static_cast<int>(orbit.elements().size()); ++i)
+    if (const auto plane = bisector(kind, orbit.elements()[i].point)) candidates.push_back({i, *plane});
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Cut& a, const Cut& b) { return a.plane.delta < b.plane.delta; });
+  std::vector<ChartPlane> planes;
+  for (const Cut& c : candidates) planes.push_back(c.plane);
+  const ClippedPolyhedron clipped = clip_planes(
+      planes, tolerance, kind == GeometryKind::Hyperbolic ? 1.0 : INFINITY, kMaxCuts);
+  Cell cell;
+  cell.polyhedron = clipped.polyhedron;
+  for (int k : clipped.kept) cell.cuts.push_back(candidates[k]);
+  if (!cell.polyhedron.bounded || cell.polyhedron.vertices.empty()) return cell;
+  cell.circumradius = 0;
+  for (const Vec3& v : cell.polyhedron.vertices)
+    cell.circumradius = std::max(cell.circumradius, displacement(kind, model::lift(kind, v)));
+  return cell;
+}
+
+// Faces, pairings and partners of the cell (see the header), then the checks.
+Manifold manifold_of(GeometryKind kind, const GroupOrbit& orbit, const Cell& cell,
+                     double tolerance, double& isometry_error) {
+  std::vector<DomainFace> faces;
+  isometry_error = 0;
+  for (const Cut& c : cell.cuts) {
+    const Mat4 inverse = model::reorthonormalize(
+        kind, model::inverse_isometry(kind, orbit.elements()[c.element].g));
+    isometry_error = std::max(isometry_error, model::isometry_error(kind, inverse));
+    const int element = orbit.find(inverse * model::origin());
+    int partner = -1;
+    for (std::size_t f = 0; f < cell.cuts.size(); ++f)
+      if (cell.cuts[f].element == element) partner = static_cast<int>(f);
+    if (partner < 0)
+      fail("the face of group element " + std::to_string(c.element) +
+           " has no partner face (the inverse's bisector does not bound the cell): the "
+           "generators do not form a discrete group, or too few elements were enumerated");
+    faces.push_back({c.plane.normal, c.plane.delta, inverse, partner});
+  }
+  Manifold m = make_generic(kind, std::move(faces), tolerance);
+  m.name = "generators";
+  validate_manifold(kind, m, tolerance);
+  return m;
+}
+
+struct Attempt {
+  DirichletDomain domain;
+  bool bounded = false;
+  std::vector<GroupElement> group;  // S3 only: the whole (finite) group
+};
+
+// One base point: conjugate, enumerate, cut. Throws GroupOrbit::Stabilised when the base
+// point is fixed by some element.
+Attempt attempt(GeometryKind kind, const std::vector<Mat4>& generators, const Vec3& base,
+                const DirichletOptions& options) {
+  Attempt a;
+  a.domain.base_point = base;
+  const Mat4 to_origin = model::translation(kind, -base), back = model::translation(kind, base);
+  std::vector<Mat4> moved;
+  for (const Mat4& g : generators) moved.push_back(to_origin * g * back);
+  // Start from the shortest generator's reach; the first cells (too few elements: too large)
+  // then set the radius and the slack.
+  double step = INFINITY;
+  for (const Mat4& g : moved) step = std::min(step, displacement(kind, g * model::origin()));
+
+  // Enumerate (all of S3's finite group; a ball in E3 and H3) until the ball holds every
+  // element whose bisector is within the cell's circumradius R.
+  step = std::max(step, 1e-6);
+  double radius = kind == GeometryKind::Spherical ? 2 * std::numbers::pi : step;
+  std::optional<GroupOrbit> orbit;
+  Cell cell;
+  for (int growth = 0;; ++growth) {
+    // Words whose prefixes stray beyond the ball: half the circumradius of detour is allowed
+    // (a wider margin costs e^(2 margin) elements in H3); validation catches a short count.
+    const double slack = std::isfinite(cell.circumradius) ? cell.circumradius / 2 : step;
+    try {
+      orbit.emplace(kind, moved, options.max_elements, radius + slack);
+    } catch (const GroupOrbit::TooLarge&) {
+      fail("more than " + std::to_string(options.max_elements) +
+           " group elements within distance " + std::to_string(radius + slack) +
+           " of the base point: the group is not discrete, or its domain is huge");
+    }
+    cell = dirichlet_cell(kind, *orbit, options.tolerance);
+    const double needed = 2 * cell.circumradius;
+    if (orbit->complete() || (cell.polyhedron.bounded && needed <= radius)) break;
+    if (growth == kMaxGrowth) break;
+    radius = std::isfinite(needed) ? std::max(needed * 1.01, radius * 1.25) : radius * 2;
+  }
+  a.domain.elements = orbit->elements().size();
+  a.domain.finite = orbit->complete();
+  a.domain.product_drift = orbit->product_drift();
+  if (kind == GeometryKind::Spherical && a.domain.finite) a.group = orbit->elements();
+  a.bounded = cell.polyhedron.bounded && !cell.polyhedron.vertices.empty() &&
+              (kind != GeometryKind::Spherical ||
+               cell.circumradius <= kMaxSphericalCircumradius);
+  if (!a.bounded) return a;
+  a.domain.manifold = manifold_of(kind, *orbit, cell, options.tolerance, a.domain.isometry_error);
+  a.domain.circumradius = cell.circumradius;
+  a.domain.inradius = INFINITY;
+  for (const Cut& c : cell.cuts)
+    a.domain.inradius = std::min(a.domain.inradius, orbit->elements()[c.element].displacement / 2);
+  a.domain.volume = domain_volume(kind, a.domain.manifold.domain);
+  return a;
+}
+
+// Base points to try, in order: the requested one (or the origin), then fixed nudges off it
+// in generic directions, scaled to the generators' reach (S3: up to a Clifford-torus point,
+// where a lens space's orbit spreads over all of R4).
+std::vector<Vec3> base_points(GeometryKind kind, const std::vector<Mat4>& generators,
+                              const DirichletOptions& options) {
+  const Vec3 start = options.base_point.value_or(Vec3{});
+  double reach = INFINITY;
+  for (const Mat4& g : generators)
+    reach = std::min(reach, displacement(kind, g * model::origin()));
+  const double scale = kind == GeometryKind::Spherical ? std::numbers::pi / 4
+                                                       : std::max(reach, 1e-6) * 0.15;
+  std::vector<Vec3> points{start, start + 0.5 * scale * normalize(Vec3{0.31, 0.17, 0.11})};
+  for (const Vec3& d : {Vec3{1, 0, 0}, Vec3{0.6, 0.8, 0}, Vec3{0.2, -0.5, 0.84},
+                        Vec3{-0.7, 0.1, 0.4}, Vec3{0, 0, 1}, Vec3{0.5, 0.5, 0.7071}})
+    points.push_back(start + scale * normalize(d));
+  return points;
+}
+
+// S3 groups whose domain no gnomonic chart holds: the domain cut into pieces (chart_atlas.h).
+Attempt atlas(Attempt a, double tolerance) {
+  constexpr auto kS3 = GeometryKind::Spherical;
+  a.domain.manifold = chart_atlas_manifold(a.group, tolerance);
+  a.domain.volume = 0;
+  a.domain.circumradius = 0;
+  for (const DomainPiece& p : a.domain.manifold.pieces) {
+    a.domain.volume += domain_volume(kS3, p.polyhedron);
+    const Mat4 to_model = model::inverse_isometry(kS3, p.chart_isometry);
+    for (const Vec3& v : p.polyhedron.vertices)
+      a.domain.circumradius =
+          std::max(a.domain.circumradius, displacement(kS3, to_model * model::lift(kS3, v)));
+    for (const PieceFace& f : p.faces)
+      a.domain.isometry_error = std::max(a.domain.isometry_error, model::isometry_error(kS3, f.pairing));
+  }
+  a.domain.inradius = INFINITY;  // half the distance to the nearest image of the origin
+  for (std::size_t i = 1; i < a.group.size(); ++i)
+    a.domain.inradius = std::min(a.domain.inradius, a.group[i].displacement / 2);
+  a.bounded = true;
+  return a;
+}
+
+}  // namespace
+
+DirichletDomain dirichlet_domain(GeometryKind kind, const std::vector<Mat4>& generators,
+                                 const DirichletOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  if (generators.empty()) fail("needs at least one generator");
+  std::optional<Attempt> best, unbounded;
+  int fixed = 0;
+  for (const Vec3& base : base_points(kind, generators, options)) {
+    Attempt a;
+    try {
+      a = attempt(kind, generators, base, options);
+    } catch (const GroupOrbit::Stabilised&) {
+      ++fixed;
+      continue;
+    }
+    if (!a.bounded) {
+      if (!unbounded && !a.group.empty()) unbounded = std::move(a);
+      continue;
+    }
+    const bool better = !best || a.domain.circumradius < best->domain.circumradius;
+    if (better) best = std::move(a);
+    // The origin (or the requested point) is kept unless the domain is awkward to chart.
+    if (kind != GeometryKind::Spherical || best->domain.circumradius < 1.2) break;
+  }
+  if (!best && unbounded) best = atlas(std::move(*unbounded), options.tolerance);
+  if (!best) {
+    if (fixed == static_cast<int>(base_points(kind, generators, options).size()))
+      fail("every base point tried is fixed by a group element: the group is not discrete");
+    fail(std::string("the Dirichlet domain is unbounded: the quotient of ") +
+         geometry_name(kind) + " space by these generators is not compact");
+  }
+  best->domain.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return std::move(best->domain);
+}
+
+}  // namespace geodesic

@@ -1,0 +1,243 @@
+#include "scene/generator_file.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include "scene/scene.h"
+
+namespace geodesic {
+namespace {
+
+// A matrix as read, with the line its first row came from.
+struct RawMatrix {
+  Mat4 m;
+  int line = 0;
+};
+
+[[noreturn]] void fail(const std::string& source, std::size_t index, int line,
+                       const std::string& reason) {
+  throw SceneError(source + ": matrix " + std::to_string(index + 1) +
+                   (line > 0 ? " (line " + std::to_string(line) + ")" : std::string()) + ": " +
+                   reason);
+}
+
+// Parses one number token in full, or fails naming it.
+double number(const std::string& token, const std::string& source, std::size_t index, int line) {
+  char* end = nullptr;
+  const double x = std::strtod(token.c_str(), &end);
+  if (token.empty() || end != token.c_str() + token.size())
+    fail(source, index, line, "\"" + token + "\" is not a number");
+  if (!std::isfinite(x)) fail(source, index, line, "entry \"" + token + "\" is not finite");
+  return x;
+}
+
+std::string_view without_bom(std::string_view text) {
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  return text;
+}
+
+// The text with '#' comments blanked out, line breaks kept (for line numbers).
+std::string without_comments(std::string_view text) {
+  std::string out;
+  bool comment = false;
+  for (const char c : text) {
+    if (c == '\n') comment = false;
+    else if (c == '#') comment = true;
+    out += comment ? ' ' : c;
+  }
+  return out;
+}
+
+// Curved Spaces: blocks of rows separated by blank (or comment-only) lines; a block of 4k rows
+// is k matrices. Row-vector convention, so each matrix is transposed.
+std::vector<RawMatrix> read_gen(std::string_view text, const std::string& source) {
+  std::vector<RawMatrix> out;
+  std::vector<std::vector<std::string>> rows;
+  int first_line = 0, line_no = 0;
+  auto flush = [&] {
+    if (rows.size() % 4 != 0)
+      fail(source, out.size() + rows.size() / 4, first_line + int(rows.size() / 4 * 4),
+           "has " + std::to_string(rows.size() % 4) + " rows, not 4 (matrices are 4x4)");
+    for (std::size_t k = 0; k < rows.size(); k += 4) {
+      RawMatrix raw;
+      raw.line = first_line + int(k);
+      for (int r = 0; r < 4; ++r) {
+        if (rows[k + r].size() != 4)
+          fail(source, out.size(), raw.line + r,
+               "row " + std::to_string(r + 1) + " has " + std::to_string(rows[k + r].size()) +
+                   " entries, not 4");
+        for (int c = 0; c < 4; ++c)
+          raw.m.m[c][r] = number(rows[k + r][c], source, out.size(), raw.line + r);  // transpose
+      }
+      out.push_back(raw);
+    }
+    rows.clear();
+  };
+  std::istringstream in{std::string(text)};
+  std::string line;
+  while (std::getline(in, line)) {
+    ++line_no;
+    std::istringstream fields(line);
+    std::vector<std::string> row;
+    for (std::string f; fields >> f;) row.push_back(f);
+    if (row.empty()) {
+      flush();
+      continue;
+    }
+    if (rows.empty()) first_line = line_no;
+    rows.push_back(std::move(row));
+  }
+  flush();
+  return out;
+}
+
+// SnapPy: every number in the text, 16 to a matrix, row by row, time coordinate first.
+std::vector<RawMatrix> read_snappy(std::string_view text, const std::string& source) {
+  std::vector<double> values;
+  std::vector<int> lines;
+  int line_no = 1;
+  for (std::size_t i = 0; i < text.size();) {
+    const char c = text[i];
+    const bool starts_number =
+        std::isdigit(static_cast<unsigned char>(c)) ||
+        ((c == '-' || c == '+' || c == '.') && i + 1 < text.size() &&
+         (std::isdigit(static_cast<unsigned char>(text[i + 1])) || text[i + 1] == '.'));
+    // Digits inside a name (e.g. "O31") are not entries.
+    const bool in_name = i > 0 && (std::isalpha(static_cast<unsigned char>(text[i - 1])) ||
+                                   text[i - 1] == '_');
+    if (c == '\n') ++line_no;
+    if (!starts_number || in_name) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i + 1;
+    while (j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) ||
+                               text[j] == '.' ||
+                               ((text[j] == '-' || text[j] == '+') &&
+                                (text[j - 1] == 'e' || text[j - 1] == 'E'))))
+      ++j;
+    values.push_back(number(std::string(text.substr(i, j - i)), source, values.size() / 16,
+                            line_no));
+    lines.push_back(line_no);
+    i = j;
+  }
+  if (values.size() % 16 != 0)
+    fail(source, values.size() / 16, lines.back(),
+         "has " + std::to_string(values.size() % 16) + " entries, not 16 (matrices are 4x4)");
+  std::vector<RawMatrix> out;
+  const int to_ours[4] = {3, 0, 1, 2};  // SnapPy index -> ours: time moves to w
+  for (std::size_t k = 0; k < values.size(); k += 16) {
+    RawMatrix raw;
+    raw.line = lines[k];
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) raw.m.m[to_ours[r]][to_ours[c]] = values[k + 4 * r + c];
+    out.push_back(raw);
+  }
+  return out;
+}
+
+double max_abs(const Mat4& g) {
+  double m = 0;
+  for (const auto& row : g.m)
+    for (double x : row) m = std::max(m, std::abs(x));
+  return m;
+}
+
+// The models whose isometry `g` is, as a bit set over GeometryKind.
+unsigned models_of(const Mat4& g) {
+  unsigned bits = 0;
+  const double size = std::max(1.0, max_abs(g));
+  for (const GeometryKind k :
+       {GeometryKind::Euclidean, GeometryKind::Hyperbolic, GeometryKind::Spherical}) {
+    const double bound = kGeneratorTolerance * (k == GeometryKind::Euclidean ? 1 : size * size);
+    if (!(model::isometry_error(k, g) <= bound)) continue;
+    if (k == GeometryKind::Hyperbolic && g.m[3][3] <= 0) continue;  // swaps the sheets
+    bits |= 1u << static_cast<unsigned>(k);
+  }
+  return bits;
+}
+
+std::string names_of(unsigned bits) {
+  std::string s;
+  for (const GeometryKind k :
+       {GeometryKind::Euclidean, GeometryKind::Hyperbolic, GeometryKind::Spherical})
+    if (bits & (1u << static_cast<unsigned>(k))) s += std::string(s.empty() ? "" : ", ") + geometry_name(k);
+  return s;
+}
+
+// The common geometry of the matrices.
+GeneratorSet classify(const std::vector<RawMatrix>& raw, const std::string& source) {
+  if (raw.empty())
+    throw SceneError(source + ": no matrices (a quotient needs at least one generator)");
+  unsigned common = 7;
+  for (std::size_t i = 0; i < raw.size(); ++i) {
+    const unsigned mine = models_of(raw[i].m);
+    if (!mine)
+      fail(source, i, raw[i].line,
+           "not an isometry of euclidean, hyperbolic or spherical space (to relative " +
+               std::to_string(kGeneratorTolerance).substr(0, 8) + ")");
+    if (!(common & mine))
+      fail(source, i, raw[i].line,
+           "is an isometry of " + names_of(mine) + " space only, but the matrices before it are "
+           "not (" + names_of(common) + ")");
+    common &= mine;
+  }
+  if (common & (common - 1))
+    throw SceneError(source + ": the matrices fix the origin, so they are isometries of " +
+                     names_of(common) + " space alike: the geometry is ambiguous");
+  GeneratorSet set;
+  set.kind = static_cast<GeometryKind>(__builtin_ctz(common));
+  for (const RawMatrix& r : raw) set.generators.push_back(r.m);
+  return set;
+}
+
+}  // namespace
+
+GeneratorSet parse_generators(std::string_view text, const std::string& source) {
+  const std::string bare = without_comments(without_bom(text));
+  return classify(bare.find('[') != std::string::npos ? read_snappy(bare, source)
+                                                      : read_gen(bare, source),
+                  source);
+}
+
+GeneratorSet generator_set(const std::vector<Mat4>& generators, const std::string& source) {
+  std::vector<RawMatrix> raw;
+  for (const Mat4& g : generators) raw.push_back({g, 0});
+  return classify(raw, source);
+}
+
+GeneratorSet load_generator_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error) || !in)
+    throw SceneError(path.string() + ": cannot open file (missing or not a regular file)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_generators(text.str(), path.string());
+}
+
+std::string format_gen(const std::vector<Mat4>& generators, const std::string& header) {
+  std::string out;
+  std::istringstream lines(header);
+  for (std::string line; std::getline(lines, line);) out += (line.empty() ? "#" : "#\t" + line) + "\n";
+  for (const Mat4& g : generators) {
+    out += "\n";
+    for (int r = 0; r < 4; ++r) {
+      for (int c = 0; c < 4; ++c) {
+        char buf[40];
+        const double x = g.m[c][r] == 0 ? 0.0 : g.m[c][r];  // no "-0"
+        std::snprintf(buf, sizeof buf, "%s%.20f", x < 0 ? "" : " ", x);
+        out += std::string(c ? "  " : " ") + buf;
+      }
+      out += "\n";
+    }
+  }
+  return out;
+}
+
+}  // namespace geodesic

@@ -1,0 +1,59 @@
+#include "scene/generator_manifold.h"
+
+#include "scene/catalogue.h"
+#include "scene/generator_file.h"
+
+namespace geodesic {
+namespace {
+
+// The generators and the field to blame for them.
+GeneratorSet read_set(const JsonNode& node, const std::filesystem::path& base_dir) {
+  const auto file = node.find("file"), text = node.find("text"), matrices = node.find("matrices");
+  if (int(bool(file)) + int(bool(text)) + int(bool(matrices)) != 1)
+    node.fail("needs exactly one of \"file\", \"text\" or \"matrices\"");
+  if (file) {
+    const std::string name = read_string(*file);
+    try {
+      return load_generator_file(base_dir / name);
+    } catch (const SceneError& e) {
+      file->fail(e.what());  // "<path>: matrix <i> (line <l>): reason"
+    }
+  }
+  if (text) return parse_generators(read_string(*text), text->path());
+  const std::size_t n = matrices->expect_array(1, "a non-empty array of 4x4 matrices");
+  std::vector<Mat4> generators;
+  for (std::size_t i = 0; i < n; ++i) generators.push_back(read_matrix((*matrices)[i]));
+  return generator_set(generators, matrices->path());  // its errors name the field
+}
+
+}  // namespace
+
+DirichletDomain read_generator_manifold(const JsonNode& node, const std::string& type,
+                                        GeometryKind kind, const std::filesystem::path& base_dir) {
+  GeneratorSet set;
+  if (type == "lens") {
+    node.expect_object({"type", "p", "q", "base_point", "max_crossings"});
+    const JsonNode p = node.at("p"), q = node.at("q");
+    set.kind = GeometryKind::Spherical;
+    try {
+      set.generators = lens_space_generators(read_int(p, 2, 1000), read_int(q, -1000, 1000));
+    } catch (const SceneError& e) {
+      q.fail(e.what());
+    }
+  } else {
+    node.expect_object({"type", "file", "text", "matrices", "base_point", "max_crossings"});
+    set = read_set(node, base_dir);
+  }
+  if (set.kind != kind)
+    node.at("type").fail("the generators are isometries of " + std::string(geometry_name(set.kind)) +
+                         " space, but the scene's geometry is " + geometry_name(kind));
+  DirichletOptions options;
+  if (const auto b = node.find("base_point")) options.base_point = read_vec3(*b);
+  try {
+    return dirichlet_domain(kind, set.generators, options);
+  } catch (const SceneError& e) {
+    node.fail(e.what());
+  }
+}
+
+}  // namespace geodesic

@@ -1,0 +1,71 @@
+// The catalogue's bundled scenes (scenes/catalogue/<name>.json, spaces known only by their
+// generators): each renders without a non-finite sample and shows its spheres, and camera rays
+// traced in double precision across the faces always land back inside the Dirichlet domain
+// (inside the cell they continue in, for domains cut into pieces charted apart).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "render/cell_tracer.h"
+#include "render_fixture.h"
+#include "scene/catalogue.h"
+
+namespace geodesic::test {
+namespace {
+
+// How far model point p lies outside cell c (<= 0: inside), relative to the face offsets.
+double outside(GeometryKind k, const std::vector<Cell>& cells, int c, const Vec4& p) {
+  const Vec3 x = model::chart(k, cells[c].chart_isometry * p);
+  double worst = -INFINITY;
+  for (const CellFace& f : cells[c].faces)
+    worst = std::max(worst, (dot(f.normal, x) - f.delta) / std::max(1.0, std::abs(f.delta)));
+  return worst;
+}
+
+TEST(CatalogueScenes, RenderFiniteAndEveryRayEndsInTheCell) {
+  for (const CatalogueEntry& entry : catalogue()) {
+    SCOPED_TRACE(entry.name);
+    Scene scene = load_scene_file(source_path("scenes/catalogue/" + entry.name + ".json"));
+    ASSERT_EQ(scene.geometry, entry.kind);
+    ASSERT_FALSE(scene.manifold.faces.empty() && scene.manifold.pieces.empty());
+
+    // Double twin: a 9 x 9 fan of camera rays through max_crossings faces each.
+    const auto cells = build_cells(scene);
+    const double tan_half = std::tan(scene.camera.fov_y_degrees * M_PI / 360);
+    int crossings = 0;
+    for (int i = 0; i < 81; ++i) {
+      const Vec3 d = normalize({(i % 9 - 4) / 4.0 * tan_half, (i / 9 - 4) / 4.0 * tan_half, -1});
+      const CameraPlacement camera = place_camera(entry.kind, cells, scene.camera.pose);
+      CellRay ray{camera.pose * model::origin(), camera.pose * Vec4(d, 0), int(camera.cell), -1};
+      ASSERT_LT(outside(entry.kind, cells, ray.cell, ray.p), 1e-9) << "the camera";
+      for (int c = 0; c < scene.manifold.max_crossings; ++c) {
+        const CellExit exit = exit_cell(entry.kind, cells, ray);
+        ASSERT_GE(exit.face, 0);
+        ASSERT_TRUE(std::isfinite(exit.t));
+        ray = cross_face(entry.kind, cells, ray, exit.face, exit.t);
+        ASSERT_LT(outside(entry.kind, cells, ray.cell, ray.p), 1e-9)
+            << "ray " << i << " after crossing " << c;
+        ++crossings;
+      }
+    }
+    EXPECT_EQ(crossings, 81 * scene.manifold.max_crossings);
+
+    scene.render.width = scene.render.height = 12;
+    try {
+      Renderer renderer(device(), scene);
+      renderer.add_samples(1);
+      EXPECT_EQ(renderer.non_finite_samples(), 0u);
+      const Image image = renderer.image();
+      int lit = 0;
+      for (int y = 0; y < 12; ++y)
+        for (int x = 0; x < 12; ++x)
+          lit += image.at(x, y, 0) + image.at(x, y, 1) + image.at(x, y, 2) > 0.05;
+      EXPECT_GT(lit, 12) << "the spheres and their copies should fill part of the view";
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "render failed: " << e.what();  // and go on with the next entry
+    }
+  }
+}
+
+}  // namespace
+}  // namespace geodesic::test

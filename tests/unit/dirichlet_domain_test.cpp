@@ -1,0 +1,261 @@
+// Dirichlet domains from generators: the catalogue's closed forms against their known orders
+// and volumes, Jeff Weeks' Curved Spaces generator files (test data outside the project), lens
+// spaces by formula, base points and the precision reached.
+#include "scene/dirichlet_domain.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <numbers>
+#include <sstream>
+
+#include "scene/catalogue.h"
+#include "scene/generator_file.h"
+#include "scene/scene.h"
+
+namespace geodesic {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr double kPi = std::numbers::pi;
+const fs::path kSource = GEODESIC_SOURCE_DIR;
+const fs::path kCurvedSpaces = kSource / ".." / "shared" / "data" / "curved-spaces-gen";
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// Every edge cycle closes with order 1: the group acts freely (a manifold, not an orbifold).
+bool acts_freely(GeometryKind kind, const Manifold& m) {
+  for (std::size_t f = 0; f < m.faces.size(); ++f)
+    if (m.faces[f].partner == static_cast<int>(f)) return false;
+  for (const EdgeCycle& c : edge_cycles(kind, m))
+    if (c.order != 1) return false;
+  return true;
+}
+
+TEST(Catalogue, EveryEntryHasItsOrderVolumeAndExactPairings) {
+  ASSERT_GE(catalogue().size(), 25u);
+  std::map<GeometryKind, int> per_geometry;
+  for (const CatalogueEntry& e : catalogue()) {
+    SCOPED_TRACE(e.name);
+    ++per_geometry[e.kind];
+    const DirichletDomain d = dirichlet_domain(e.kind, e.generators);
+    EXPECT_NEAR(d.volume, e.volume, 1e-9 * e.volume);
+    EXPECT_EQ(d.finite, e.group_order.has_value());
+    if (e.group_order) EXPECT_EQ(d.elements, static_cast<std::size_t>(*e.group_order));
+    EXPECT_LT(d.isometry_error, 1e-14);
+    EXPECT_LT(d.product_drift, 1e-12);
+    EXPECT_EQ(acts_freely(e.kind, d.manifold), !e.orbifold);
+    EXPECT_GT(d.inradius, 0);
+    EXPECT_LE(d.inradius, d.circumradius);
+  }
+  EXPECT_GE(per_geometry[GeometryKind::Euclidean], 8);
+  EXPECT_GE(per_geometry[GeometryKind::Spherical], 12);
+  EXPECT_GE(per_geometry[GeometryKind::Hyperbolic], 2);
+}
+
+TEST(Catalogue, KnownDomainShapes) {
+  auto faces = [](const std::string& name) {
+    const CatalogueEntry& e = *find_catalogue_entry(name);
+    return dirichlet_domain(e.kind, e.generators).manifold.faces.size();
+  };
+  EXPECT_EQ(faces("3-torus"), 6u);            // cube
+  EXPECT_EQ(faces("hexagonal-torus"), 8u);    // hexagonal prism
+  EXPECT_EQ(faces("hantzsche-wendt"), 12u);   // rhombic dodecahedron
+  EXPECT_EQ(faces("binary-dihedral-2"), 6u);  // the quaternionic cube
+  EXPECT_EQ(faces("binary-tetrahedral"), 8u);  // octahedron
+  EXPECT_EQ(faces("binary-octahedral"), 14u);  // truncated cube
+  EXPECT_EQ(faces("binary-icosahedral"), 12u);  // Poincare's dodecahedron
+  EXPECT_EQ(faces("lens-5-2"), 4u);  // the tetrahedral space L(5, 2)
+  EXPECT_EQ(faces("seifert-weber"), 12u);
+  EXPECT_EQ(faces("mirrored-dodecahedron"), 12u);
+}
+
+TEST(Catalogue, CommittedFilesAreTheGeneratorsOutput) {
+  for (const CatalogueEntry& e : catalogue()) {
+    SCOPED_TRACE(e.name);
+    const fs::path gen = kSource / "catalogue" / (e.name + ".gen");
+    ASSERT_TRUE(fs::exists(gen)) << "run `geodesic catalogue` in the source root";
+    EXPECT_EQ(read_text(gen), catalogue_gen_text(e));
+    EXPECT_TRUE(fs::exists(kSource / "scenes" / "catalogue" / (e.name + ".json")));
+    // The file's 20 decimals give back the closed form.
+    const GeneratorSet set = load_generator_file(gen);
+    EXPECT_EQ(set.kind, e.kind);
+    ASSERT_EQ(set.generators.size(), e.generators.size());
+    for (std::size_t i = 0; i < set.generators.size(); ++i)
+      for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c)
+          EXPECT_NEAR(set.generators[i].m[r][c], e.generators[i].m[r][c], 1e-15);
+  }
+  EXPECT_EQ(read_text(kSource / "catalogue" / "README.md"), catalogue_readme());
+}
+
+TEST(LensSpaces, AnyCoprimePairByFormula) {
+  for (const auto& [p, q] : {std::pair{5, 3}, {8, 5}, {13, 5}, {17, 4}, {24, 7}, {40, 9}}) {
+    SCOPED_TRACE("L(" + std::to_string(p) + "," + std::to_string(q) + ")");
+    const DirichletDomain d = dirichlet_domain(GeometryKind::Spherical, lens_space_generators(p, q));
+    EXPECT_EQ(d.elements, static_cast<std::size_t>(p));
+    EXPECT_NEAR(d.volume, 2 * kPi * kPi / p, 1e-9);
+    EXPECT_TRUE(acts_freely(GeometryKind::Spherical, d.manifold));
+  }
+}
+
+TEST(LensSpaces, ClearErrors) {
+  EXPECT_THROW(
+      {
+        try {
+          lens_space_generators(6, 4);
+        } catch (const SceneError& e) {
+          EXPECT_NE(std::string(e.what()).find("coprime (gcd 2)"), std::string::npos) << e.what();
+          throw;
+        }
+      },
+      SceneError);
+  EXPECT_THROW(lens_space_generators(1, 0), SceneError);
+}
+
+// Projective space preserves a great circle: no domain fits one gnomonic chart, so the
+// Dirichlet domain is cut into pieces charted apart (chart_atlas.h). L(p, 1) needs more pieces
+// than the renderer has cells, and says so.
+TEST(LensSpaces, GreatCircleGroupsAreChartedInPieces) {
+  constexpr auto kS3 = GeometryKind::Spherical;
+  for (const int p : {3, 7, 24})
+    try {
+      dirichlet_domain(kS3, lens_space_generators(p, 1));
+      FAIL() << "L(" << p << ", 1) fits at most 8 cells?";
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find("but the renderer keeps at most 8 cells"),
+                std::string::npos)
+          << e.what();
+    }
+  for (const auto& [p, q] : {std::pair{2, 1}}) {
+    SCOPED_TRACE("L(" + std::to_string(p) + "," + std::to_string(q) + ")");
+    const DirichletDomain d = dirichlet_domain(kS3, lens_space_generators(p, q));
+    EXPECT_EQ(d.elements, static_cast<std::size_t>(p));
+    EXPECT_NEAR(d.volume, 2 * kPi * kPi / p, 1e-9);
+    ASSERT_GE(d.manifold.pieces.size(), 2u);
+    EXPECT_TRUE(d.manifold.domain.vertices.empty());
+    EXPECT_NEAR(d.inradius, kPi / p, 1e-12);  // the orbit of the origin is a great circle
+    EXPECT_LT(d.isometry_error, 1e-14);
+    int faces = 0;
+    for (const DomainPiece& piece : d.manifold.pieces) {
+      for (const Vec3& v : piece.polyhedron.vertices)
+        EXPECT_LE(length(v), std::sqrt(3.0) + 1e-9);  // within pi / 3 of the piece's centre
+      faces += static_cast<int>(piece.faces.size());
+    }
+    // Gluings are mutual: the partner's partner is the face, the pairings inverse.
+    std::vector<const PieceFace*> all;
+    for (const DomainPiece& piece : d.manifold.pieces)
+      for (const PieceFace& f : piece.faces) all.push_back(&f);
+    ASSERT_EQ(static_cast<int>(all.size()), faces);
+    for (int f = 0; f < faces; ++f) {
+      const PieceFace& back = *all[all[f]->partner];
+      EXPECT_EQ(back.partner, f);
+      const Mat4 loop = back.pairing * all[f]->pairing;
+      for (int r = 0; r < 4; ++r)
+        for (int c = 0; c < 4; ++c) EXPECT_NEAR(loop.m[r][c], r == c ? 1 : 0, 1e-12);
+    }
+  }
+}
+
+TEST(DirichletDomain, BasePointMovesTheDomainNotTheSpace) {
+  const CatalogueEntry& sw = *find_catalogue_entry("seifert-weber");
+  DirichletOptions options;
+  options.base_point = Vec3{0.2, -0.1, 0.3};
+  const DirichletDomain d = dirichlet_domain(sw.kind, sw.generators, options);
+  EXPECT_NEAR(d.volume, sw.volume, 1e-8);
+  EXPECT_NEAR(d.base_point.x, 0.2, 1e-15);
+  EXPECT_GT(d.manifold.faces.size(), 12u);  // a generic point: no longer the dodecahedron
+}
+
+TEST(DirichletDomain, FixedBasePointIsMovedOff) {
+  // The mirrored dodecahedron's reflections fix points on its faces; a base point on a mirror
+  // is nudged off it.
+  const CatalogueEntry& m = *find_catalogue_entry("mirrored-dodecahedron");
+  DirichletOptions options;
+  const Vec3 n = dodecahedron_normals()[0];
+  options.base_point = n * std::atanh(std::pow(5.0, -0.25));  // on face 0's plane
+  const DirichletDomain d = dirichlet_domain(m.kind, m.generators, options);
+  EXPECT_GT(length(d.base_point - *options.base_point), 1e-3);
+  EXPECT_NEAR(d.volume, m.volume, 1e-8);
+}
+
+TEST(DirichletDomain, NonCompactAndEmptyInputs) {
+  EXPECT_THROW(dirichlet_domain(GeometryKind::Euclidean, {}), SceneError);
+  const Mat4 shift = model::translation(GeometryKind::Euclidean, {1, 0, 0});
+  try {
+    dirichlet_domain(GeometryKind::Euclidean, {shift});
+    FAIL() << "one translation leaves the domain unbounded";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("unbounded"), std::string::npos) << e.what();
+  }
+}
+
+// Curved Spaces' files: every one parses; those whose group preserves a great circle are
+// refused with the reason; the rest give valid domains whose volume matches the group order
+// (S3) or the known volume (H3).
+TEST(CurvedSpacesFiles, AllParseAndBuildDomains) {
+  if (!fs::exists(kCurvedSpaces)) GTEST_SKIP() << "test data not found at " << kCurvedSpaces;
+  // Group orders (the catalogue's binary dihedral D*n has order 4n) and volumes: the Weeks
+  // manifold 0.9427073628 and Thurston's 0.9813688289 (SnapPea census), Seifert-Weber and the
+  // right-angled dodecahedron as in the catalogue.
+  const std::map<std::string, std::size_t> kOrders = {
+      {"Spherical Cube", 8},         {"Binary Dihedral 2 L", 8},   {"Binary Dihedral 3 L", 12},
+      {"Binary Dihedral 4 L", 16},   {"Binary Dihedral 6 L", 24},  {"Binary Dihedral 8 L", 32},
+      {"Binary Dihedral 12 L", 48},  {"Binary Tetrahedral L", 24}, {"Binary Icosahedral L", 120},
+      {"Tetrahedral Space = L(5,2)", 5}, {"Mirrored Tetrahedron", 16}, {"Projective 3-Space", 2}};
+  const std::map<std::string, double> kVolumes = {
+      {"Hyperbolic First", 0.9427073628},
+      {"Hyperbolic Second", 0.9813688289},
+      {"Seifert Weber R", find_catalogue_entry("seifert-weber")->volume},
+      {"Mirrored Dodecahedron", find_catalogue_entry("mirrored-dodecahedron")->volume},
+      {"Hantzsche Wendt", 2.0}};
+  std::size_t checked = 0;
+  int files = 0, built = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(kCurvedSpaces)) {
+    if (entry.path().extension() != ".gen") continue;
+    ++files;
+    const std::string name = entry.path().stem().string();
+    SCOPED_TRACE(entry.path().string());
+    if (name == "3-Sphere") {  // no generators at all
+      EXPECT_THROW(load_generator_file(entry.path()), SceneError);
+      continue;
+    }
+    const GeneratorSet set = load_generator_file(entry.path());
+    const bool great_circle = name.starts_with("Lens(") || name.starts_with("Mirrored Lens");
+    if (great_circle) {  // too many chart pieces (see LensSpaces.GreatCircleGroups...)
+      EXPECT_EQ(set.kind, GeometryKind::Spherical);
+      EXPECT_THROW(dirichlet_domain(set.kind, set.generators), SceneError);
+      continue;
+    }
+    const DirichletDomain d = dirichlet_domain(set.kind, set.generators);
+    ++built;
+    EXPECT_LT(d.isometry_error, 1e-14);
+    EXPECT_LT(d.product_drift, 1e-12);
+    if (set.kind == GeometryKind::Spherical) {
+      EXPECT_TRUE(d.finite);
+      EXPECT_NEAR(d.volume * d.elements, 2 * kPi * kPi, 1e-8);
+    }
+    if (const auto it = kOrders.find(name); it != kOrders.end()) {
+      EXPECT_EQ(d.elements, it->second);
+      ++checked;
+    }
+    if (const auto it = kVolumes.find(name); it != kVolumes.end()) {
+      EXPECT_NEAR(d.volume, it->second, 1e-9);
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, kOrders.size() + kVolumes.size() + 1);  // the mirrored dodecahedron twice
+  EXPECT_EQ(files, 46);
+  EXPECT_GE(built, 31);
+}
+
+}  // namespace
+}  // namespace geodesic

@@ -1,0 +1,120 @@
+// Generator text: Curved Spaces .gen files (row vectors, transposed on reading) and SnapPy's
+// O(3,1) pairing matrices (time first), the geometry they imply, and errors that name the
+// matrix, the line and the reason.
+#include "scene/generator_file.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+
+#include "scene/catalogue.h"
+#include "scene/dirichlet_domain.h"
+#include "scene/scene.h"
+
+namespace geodesic {
+namespace {
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_generators(text, "test.gen");
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+const char* kHalfTurn =
+    "\xEF\xBB\xBF# Half turn space\n"
+    "#   comment lines, then blank-separated 4x4 blocks\n\n"
+    " 1 0 0 0\n 0 1 0 0\n 0 0 1 0\n 1 0 0 1\n\n"
+    " 1 0 0 0\n 0 1 0 0\n 0 0 1 0\n 0 1 0 1   # trailing comment\n\n"
+    "-1 0 0 0\n 0 -1 0 0\n 0 0 1 0\n 0 0 1 1\n";
+
+TEST(GeneratorFile, ReadsCurvedSpacesTextTransposed) {
+  const GeneratorSet set = parse_generators(kHalfTurn, "half-turn.gen");
+  EXPECT_EQ(set.kind, GeometryKind::Euclidean);
+  ASSERT_EQ(set.generators.size(), 3u);
+  // Row-vector translation in the bottom row becomes our last column.
+  EXPECT_EQ(set.generators[0].m[0][3], 1.0);
+  EXPECT_EQ(set.generators[0].m[3][0], 0.0);
+  EXPECT_EQ(set.generators[2].m[2][3], 1.0);
+  EXPECT_EQ(set.generators[2].m[0][0], -1.0);
+  const DirichletDomain d = dirichlet_domain(set.kind, set.generators);
+  EXPECT_NEAR(d.volume, 1.0, 1e-12);  // 1 x 1 x 2 lattice, holonomy 2
+}
+
+TEST(GeneratorFile, DetectsEachGeometry) {
+  for (const char* name : {"half-turn", "binary-octahedral", "seifert-weber"}) {
+    const CatalogueEntry& e = *find_catalogue_entry(name);
+    EXPECT_EQ(parse_generators(catalogue_gen_text(e), name).kind, e.kind) << name;
+  }
+}
+
+TEST(GeneratorFile, ErrorsNameMatrixLineAndReason) {
+  EXPECT_EQ(error_of("1 0 0 0\n0 1 0 0\n0 0 1\n0 0 0 1\n"),
+            "test.gen: matrix 1 (line 3): row 3 has 3 entries, not 4");
+  EXPECT_EQ(error_of("1 0 0 0\n0 1 0 0\n0 0 1 0\n"),
+            "test.gen: matrix 1 (line 1): has 3 rows, not 4 (matrices are 4x4)");
+  EXPECT_EQ(error_of("1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n\n1 0 0 0\n0 1 x 0\n0 0 1 0\n2 0 0 1\n"),
+            "test.gen: matrix 2 (line 7): \"x\" is not a number");
+  EXPECT_EQ(error_of("1 0 0 0\n0 1 0 0\n0 0 nan 0\n2 0 0 1\n"),
+            "test.gen: matrix 1 (line 3): entry \"nan\" is not finite");
+  EXPECT_NE(error_of("2 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n")
+                .find("matrix 1 (line 1): not an isometry of euclidean, hyperbolic or spherical"),
+            std::string::npos);
+  // A translation (E3 only) then a turn in the zw plane (S3 only).
+  EXPECT_NE(error_of("1 0 0 0\n0 1 0 0\n0 0 1 0\n1 0 0 1\n\n"
+                     "1 0 0 0\n0 1 0 0\n0 0 0 1\n0 0 -1 0\n")
+                .find("matrix 2 (line 6): is an isometry of spherical space only, but the "
+                      "matrices before it are not (euclidean)"),
+            std::string::npos);
+  EXPECT_NE(error_of("# nothing\n").find("no matrices"), std::string::npos);
+  EXPECT_NE(error_of("0 -1 0 0\n1 0 0 0\n0 0 1 0\n0 0 0 1\n").find("ambiguous"),
+            std::string::npos);
+}
+
+// SnapPy prints O(3,1) matrices with the time coordinate first; the Seifert-Weber pairings
+// written that way come back as our matrices and give the same domain.
+TEST(GeneratorFile, ReadsSnapPyPairingMatrices) {
+  const CatalogueEntry& sw = *find_catalogue_entry("seifert-weber");
+  const int from_ours[4] = {3, 0, 1, 2};  // SnapPy index i holds our coordinate from_ours[i]
+  std::string text = "[";
+  for (std::size_t k = 0; k < sw.generators.size(); ++k) {
+    text += k ? ",\n Matrix([" : "Matrix([";
+    for (int r = 0; r < 4; ++r) {
+      text += r ? ", [" : "[";
+      for (int c = 0; c < 4; ++c) {
+        char buf[40];
+        std::snprintf(buf, sizeof buf, "%s%.17g", c ? ", " : "",
+                      sw.generators[k].m[from_ours[r]][from_ours[c]]);
+        text += buf;
+      }
+      text += "]";
+    }
+    text += "])";
+  }
+  text += "]";
+  const GeneratorSet set = parse_generators(text, "snappy.txt");
+  EXPECT_EQ(set.kind, GeometryKind::Hyperbolic);
+  ASSERT_EQ(set.generators.size(), sw.generators.size());
+  for (std::size_t k = 0; k < set.generators.size(); ++k)
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c)
+        EXPECT_NEAR(set.generators[k].m[r][c], sw.generators[k].m[r][c], 1e-15);
+  EXPECT_NEAR(dirichlet_domain(set.kind, set.generators).volume, sw.volume, 1e-8);
+  EXPECT_NE(error_of("[[1, 0, 0, 0], [0, 1, 0]]").find("has 7 entries, not 16"),
+            std::string::npos);
+}
+
+TEST(GeneratorFile, FormatRoundTrips) {
+  const CatalogueEntry& e = *find_catalogue_entry("binary-icosahedral");
+  const GeneratorSet set = parse_generators(format_gen(e.generators, "header\n\nmore"), "x");
+  ASSERT_EQ(set.generators.size(), e.generators.size());
+  for (std::size_t k = 0; k < set.generators.size(); ++k)
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) EXPECT_EQ(set.generators[k].m[r][c], e.generators[k].m[r][c]);
+}
+
+}  // namespace
+}  // namespace geodesic
