@@ -8,6 +8,7 @@ namespace geodesic {
 int render_command(int argc, char** argv);
 int devices_command(int argc, char** argv);
 int serve_command(int argc, char** argv);
+int catalogue_command(int argc, char** argv);
 }  // namespace geodesic
 
 namespace {
@@ -15,11 +16,17 @@ namespace {
 const char* kUsage =
     "usage: geodesic <command> [options]\n"
     "commands:\n"
-    "  render SCENE.json -o OUT.{png,exr,jpg} [--spp N | --time SECONDS] [--width W]\n"
-    "         [--height H] [--max-depth D] [--seed S] [--device NAME|INDEX]\n"
+    "  render SCENE.json -o OUT.{png,exr,jpg} [--spp N | --time SECONDS | --target-error E]\n"
+    "         [--report FILE.json] [--width W] [--height H] [--max-depth D] [--seed S]\n"
+    "         [--device NAME|INDEX] [--lighting physical|paper]\n"
     "         [--backend auto|ray-query|pipeline]\n"
+    "  render --generators FILE.gen -o OUT ...  the same options, rendering a default scene\n"
+    "                inside the space of a generator file (Curved Spaces .gen or SnapPy)\n"
+    "  catalogue [ROOT]  write the manifold catalogue (ROOT/catalogue/*.gen, README.md and\n"
+    "                ROOT/scenes/catalogue/*.json) from its closed forms; ROOT defaults to .\n"
     "  devices       list Vulkan devices and whether each can ray-trace\n"
-    "  serve [--host H] [--port P] [--device NAME|INDEX] [--web DIR]\n"
+    "  serve [--host H] [--port P] [--device NAME|INDEX] [--web DIR] [--data DIR]\n"
+    "        [--token T] [--max-jobs N] [--max-queue N] [--checkpoint-seconds S]\n"
     "                the render daemon: HTTP and WebSocket (docs/protocol.md), default\n"
     "                127.0.0.1:8080, until SIGINT or SIGTERM\n";
 
@@ -35,6 +42,7 @@ int main(int argc, char** argv) {
     if (command == "render") return geodesic::render_command(argc - 2, argv + 2);
     if (command == "devices") return geodesic::devices_command(argc - 2, argv + 2);
     if (command == "serve") return geodesic::serve_command(argc - 2, argv + 2);
+    if (command == "catalogue") return geodesic::catalogue_command(argc - 2, argv + 2);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "geodesic %s: %s\n", command.c_str(), e.what());
     return 1;

@@ -63,6 +63,11 @@ Vec4 geodesic_tangent(GeometryKind k, const Vec4& p, const Vec4& v, double t) {
   return -curvature(k) * s * p + c * v;
 }
 
+double sphere_area_factor(GeometryKind k, double d) {
+  const double s = trig(k, d).second;
+  return s * s;
+}
+
 double geodesic_distance(GeometryKind k, const Vec4& a, const Vec4& b) {
   const Vec4 d = b - a;
   switch (k) {

@@ -51,6 +51,10 @@ double inner(GeometryKind k, const Vec4& a, const Vec4& b);
 Vec4 geodesic_point(GeometryKind k, const Vec4& p, const Vec4& v, double t);
 Vec4 geodesic_tangent(GeometryKind k, const Vec4& p, const Vec4& v, double t);
 
+// A(d): the geodesic sphere of radius d has area 4 pi A(d), and a point source's irradiance
+// falls off as 1 / A(d): d^2 in E3, sinh^2 d in H3, sin^2 d in S3.
+double sphere_area_factor(GeometryKind k, double d);
+
 // Geodesic distance (S3: the shorter arc, in [0, pi]).
 double geodesic_distance(GeometryKind k, const Vec4& a, const Vec4& b);
 

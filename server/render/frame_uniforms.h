@@ -19,9 +19,14 @@ struct FrameUniforms {
   uint32_t russian_roulette;  // 0 or 1
   uint32_t max_crossings;     // cell faces a ray may cross
   uint32_t camera_cell;
-  uint32_t padding[2];
+  uint32_t lighting;        // 0 paper, 1 physical (LightingModel)
+  uint32_t light_sampling;  // 0 MIS, 1 BSDF sampling only (LightSampling)
+  uint32_t emitter_count;
+  float light_cutoff;       // geodesic distance (1e30: none)
+  float clamp;              // largest sample luminance; 0: no clamp
+  uint32_t padding;
 };
-static_assert(sizeof(FrameUniforms) == 128, "must match the std140 layout of Frame");
+static_assert(sizeof(FrameUniforms) == 144, "must match the std140 layout of Frame");
 
 // Which samples one dispatch adds, to which rows (push constants): a sample of a large image
 // can be split into bands of rows, so that the render thread can turn to a camera move or to

@@ -31,11 +31,12 @@ ChartBox cell_box(const Cell& cell) {
   return box;
 }
 
-void pack_cell_triangles(const Scene& scene, const Cell& cell, uint32_t cell_index,
-                         PackedScene& out) {
+void pack_cell_triangles(const Scene& scene, const EmitterTable& emitting, const Cell& cell,
+                         uint32_t cell_index, PackedScene& out) {
   const GeometryKind k = scene.geometry;
   const ChartBox box = cell_box(cell);
-  for (const TriangleMesh& mesh : scene.meshes) {
+  for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    const TriangleMesh& mesh = scene.meshes[m];
     const bool smooth = k == GeometryKind::Euclidean && mesh.normals.size() == mesh.positions.size();
     for (size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
       Vec3 chart[3];
@@ -58,7 +59,8 @@ void pack_cell_triangles(const Scene& scene, const Cell& cell, uint32_t cell_ind
         out.normals.push_back(smooth ? to_float4(mesh.normals[mesh.indices[t + i]]) : Float4{});
         out.indices.push_back(base + i);
       }
-      out.triangles.push_back({mesh.material, smooth ? 1u : 0u, cell_index, 0});
+      out.triangles.push_back(
+          {mesh.material, smooth ? 1u : 0u, cell_index, emitting.triangle_emitter[m][t / 3]});
     }
   }
 }
@@ -98,9 +100,15 @@ PackedScene pack_scene(const Scene& scene) {
   for (const Material& m : scene.materials)
     out.materials.push_back({to_float4(m.ambient), to_float4(m.diffuse),
                              to_float4(m.specular, m.shininess), to_float4(m.mirror),
-                             to_float4(m.emission)});
-  for (const Sphere& s : scene.spheres)
-    out.spheres.push_back({to_float4(model::exp_origin(k, s.center)), float(s.radius), s.material, {0, 0}});
+                             to_float4(m.transmission, m.ior), to_float4(m.emission)});
+  const EmitterTable emitting = build_emitters(scene);
+  out.emitters = emitting.emitters;
+  out.light_images = emitting.images;
+  out.light_cutoff = emitting.cutoff;
+  for (size_t s = 0; s < scene.spheres.size(); ++s)
+    out.spheres.push_back({to_float4(model::exp_origin(k, scene.spheres[s].center)),
+                           float(scene.spheres[s].radius), scene.spheres[s].material,
+                           emitting.sphere_emitter[s], 0});
   for (const PointLight& l : scene.lights)
     out.lights.push_back({to_float4(model::exp_origin(k, l.position)), to_float4(l.intensity)});
 
@@ -114,7 +122,7 @@ PackedScene pack_scene(const Scene& scene) {
                            uint32_t(f.target_cell), uint32_t(f.partner), {0, 0}});
     CellGeometry g;
     g.first_triangle = uint32_t(out.triangles.size());
-    pack_cell_triangles(scene, cell, c, out);
+    pack_cell_triangles(scene, emitting, cell, c, out);
     g.triangle_count = uint32_t(out.triangles.size()) - g.first_triangle;
     g.first_sphere_ref = uint32_t(out.sphere_refs.size());
     pack_cell_spheres(scene, cell, c, out);

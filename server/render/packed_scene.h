@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "render/cells.h"
+#include "render/emitters.h"
 #include "scene/scene.h"
 
 namespace geodesic {
@@ -21,6 +22,7 @@ struct GpuMaterial {
   Float4 diffuse;   // rgb
   Float4 specular;  // rgb, w = shininess k_e
   Float4 mirror;    // rgb
+  Float4 transmission;  // rgb, w = index of refraction
   Float4 emission;  // rgb
 };
 
@@ -28,7 +30,8 @@ struct GpuSphere {
   Float4 center;  // model point
   float radius;   // geodesic
   uint32_t material;
-  uint32_t padding[2];
+  uint32_t emitter;  // index into the emitters, or EmitterTable::kNone
+  uint32_t padding;
 };
 
 struct GpuSphereRef {
@@ -45,7 +48,7 @@ struct GpuTriangle {
   uint32_t material;
   uint32_t smooth;  // 1 when the mesh supplies per-vertex normals (E3)
   uint32_t cell;
-  uint32_t padding;
+  uint32_t emitter;  // index into the emitters, or EmitterTable::kNone
 };
 
 struct GpuCell {
@@ -78,6 +81,9 @@ struct PackedScene {
   std::vector<GpuMaterial> materials;
   std::vector<GpuSphere> spheres;
   std::vector<GpuPointLight> lights;
+  std::vector<GpuEmitter> emitters;         // the physical model's light sources
+  std::vector<Float16> light_images;        // their images' isometries (GpuEmitter ranges)
+  double light_cutoff = 0;
   std::vector<GpuCell> cells;
   std::vector<GpuCellFace> faces;
   std::vector<CellGeometry> cell_geometry;  // one per cell

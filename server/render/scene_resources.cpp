@@ -15,7 +15,7 @@ constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
 enum Binding : uint32_t {
   kScene = 0, kAccumulation, kFrame, kSpheres, kMaterials, kLights, kPositions, kNormals,
   kIndices, kTriangles, kRayCounts, kSphereRefs, kCells, kCellFaces, kDiagnostics,
-  kBindingCount
+  kEmitters, kLightImages, kBindingCount
 };
 
 FrameUniforms make_uniforms(const Scene& scene, const PackedScene& packed) {
@@ -36,6 +36,11 @@ FrameUniforms make_uniforms(const Scene& scene, const PackedScene& packed) {
   u.light_count = static_cast<uint32_t>(scene.lights.size());
   u.seed = static_cast<uint32_t>(scene.render.seed ^ (scene.render.seed >> 32));
   u.russian_roulette = scene.render.russian_roulette ? 1u : 0u;
+  u.lighting = scene.render.lighting == LightingModel::Physical ? 1u : 0u;
+  u.light_sampling = scene.render.light_sampling == LightSampling::Bsdf ? 1u : 0u;
+  u.emitter_count = static_cast<uint32_t>(packed.emitters.size());
+  u.light_cutoff = static_cast<float>(packed.light_cutoff);
+  u.clamp = static_cast<float>(scene.render.clamp);
   return u;
 }
 
@@ -63,6 +68,8 @@ SceneResources::SceneResources(VulkanContext& ctx, const Scene& scene)
   sphere_refs_ = GpuBuffer::from_vector(ctx, packed_.sphere_refs, kStorage);
   cells_ = GpuBuffer::from_vector(ctx, packed_.cells, kStorage);
   faces_ = GpuBuffer::from_vector(ctx, packed_.faces, kStorage);
+  emitters_ = GpuBuffer::from_vector(ctx, packed_.emitters, kStorage);
+  light_images_ = GpuBuffer::from_vector(ctx, packed_.light_images, kStorage);
   diagnostics_ = GpuBuffer(ctx, sizeof(uint32_t), kStorage);
   std::memset(diagnostics_.mapped(), 0, sizeof(uint32_t));
   create_descriptors();
@@ -99,6 +106,10 @@ void SceneResources::set_max_depth(uint32_t max_depth) {
 void SceneResources::clear_accumulation() {
   std::memset(accumulation_.mapped(), 0, accumulation_.size());
   std::memset(ray_counts_.mapped(), 0, ray_counts_.size());
+}
+
+void SceneResources::load_accumulation(const float* sums) {
+  std::memcpy(accumulation_.mapped(), sums, 2 * size_t(width()) * height() * 4 * sizeof(float));
 }
 
 uint32_t SceneResources::non_finite_samples() const {
@@ -162,7 +173,8 @@ void SceneResources::create_descriptors() {
                                              &spheres_,   &materials_,    &lights_,
                                              &positions_, &normals_,      &indices_,
                                              &triangles_,   &ray_counts_,   &sphere_refs_,
-                                             &cells_,       &faces_,        &diagnostics_};
+                                             &cells_,       &faces_,        &diagnostics_,
+                                             &emitters_,    &light_images_};
   VkDescriptorBufferInfo infos[kBindingCount]{};
   VkWriteDescriptorSet writes[kBindingCount]{};
   for (uint32_t i = 0; i < kBindingCount; ++i) {

@@ -37,6 +37,8 @@ class SceneResources {
   // height, in two halves: even-numbered samples, then odd-numbered ones.
   const float* accumulation() const { return static_cast<const float*>(accumulation_.mapped()); }
   void clear_accumulation();
+  // Overwrites the accumulation of the current view with `sums` (its size: a checkpoint).
+  void load_accumulation(const float* sums);
   // New camera and/or a resolution up to the allocated one (reduced while moving); clears.
   void set_view(const Mat4& camera_pose, uint32_t camera_cell, uint32_t width, uint32_t height);
   void set_max_depth(uint32_t max_depth);
@@ -55,7 +57,8 @@ class SceneResources {
   size_t capacity_ = 0;  // pixels the buffers hold
   SceneAccelerationStructures structures_;
   GpuBuffer frame_, accumulation_, spheres_, materials_, lights_, positions_, normals_,
-      indices_, triangles_, ray_counts_, sphere_refs_, cells_, faces_, diagnostics_;
+      indices_, triangles_, ray_counts_, sphere_refs_, cells_, faces_, diagnostics_, emitters_,
+      light_images_;
   VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
   VkDescriptorSet set_ = VK_NULL_HANDLE;

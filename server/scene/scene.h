@@ -16,7 +16,9 @@
 
 namespace geodesic {
 
-// The paper's material coefficients (eq. 2.2) plus a perfect mirror and emission, RGB.
+// The paper's material coefficients (eq. 2.2) plus a perfect mirror, a dielectric and
+// emission, RGB. The `physical` model reads diffuse, specular (normalised Phong), mirror and
+// transmission as the weights of four lobes (server/render/bsdf.h), summing to at most 1.
 struct Material {
   std::string name;
   Vec3 ambient;          // k_a
@@ -24,7 +26,9 @@ struct Material {
   Vec3 specular;         // k_s
   double shininess = 1;  // k_e, the Phong roughness exponent
   Vec3 mirror;           // reflectance of a perfect mirror lobe
-  Vec3 emission;         // emitted radiance L_e
+  Vec3 transmission;     // weight of the smooth dielectric lobe (physical model only)
+  double ior = 1.5;      // its index of refraction, inside over outside
+  Vec3 emission;         // emitted radiance L_e, from both sides
 };
 
 struct Sphere {
@@ -54,6 +58,15 @@ struct Camera {
   double fov_y_degrees = 45;
 };
 
+// `paper`: Novello et al.'s eq. 2.2 (ambient, diffuse and Phong terms, 0/1 shadows) plus their
+// Monte Carlo indirect term (algorithm 3). `physical`: unbiased path tracing of the rendering
+// equation (eq. 2.4) with next-event estimation and multiple importance sampling.
+enum class LightingModel { Paper, Physical };
+
+// How the physical model finds light: both strategies combined by MIS, or BSDF sampling
+// alone (point lights then contribute nothing; for checking MIS).
+enum class LightSampling { Mis, Bsdf };
+
 struct RenderSettings {
   int width = 512;
   int height = 512;
@@ -61,9 +74,18 @@ struct RenderSettings {
   int spp = 64;
   uint64_t seed = 1;
   Vec3 ambient_light;  // L_a of eq. 2.2
-  // End paths at random after the first bounce, with probability 1 - max(throughput), and
-  // reweight survivors: the same expected image from cheaper paths (as Cycles does).
-  bool russian_roulette = false;
+  // End paths at random, with probability 1 - max(throughput), and reweight survivors: the
+  // same expected image from cheaper paths (as Cycles does). Paper model: after the first
+  // bounce, off unless asked for; physical model: after the third, on unless turned off.
+  bool russian_roulette = true;
+  LightingModel lighting = LightingModel::Physical;
+  LightSampling light_sampling = LightSampling::Mis;
+  // Next-event estimation sums a light's images (one per copy of the cell, and in S3 the long
+  // way round) whose centre is within this geodesic distance of the shading point. 0: the
+  // default (see docs/scene-format.md).
+  double light_cutoff = 0;
+  // Largest luminance one sample may add (fireflies); 0: no clamp, the unbiased default.
+  double clamp = 0;
 };
 
 struct Scene {

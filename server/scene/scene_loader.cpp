@@ -113,7 +113,8 @@ std::vector<Material> read_materials(const JsonNode& node) {
   std::vector<Material> materials;
   for (const auto& item : node.value().items()) {
     const JsonNode m = node.at(item.key());
-    m.expect_object({"ambient", "diffuse", "specular", "shininess", "mirror", "emission"});
+    m.expect_object({"ambient", "diffuse", "specular", "shininess", "mirror", "transmission",
+                     "ior", "emission"});
     auto rgb = [&](const char* key) {
       const auto child = m.find(key);
       return child ? read_rgb(*child) : Vec3();
@@ -123,14 +124,23 @@ std::vector<Material> read_materials(const JsonNode& node) {
                       .diffuse = rgb("diffuse"),
                       .specular = rgb("specular"),
                       .mirror = rgb("mirror"),
+                      .transmission = rgb("transmission"),
                       .emission = rgb("emission")};
     if (const auto shininess = m.find("shininess"))
       material.shininess = read_non_negative(*shininess);
-    // Diffuse and mirror lobes both reflect light; together they may not create energy.
-    for (int c = 0; c < 3; ++c)
-      if (material.diffuse[c] + material.mirror[c] > 1)
-        m.fail("diffuse[" + std::to_string(c) + "] + mirror[" + std::to_string(c) +
-               "] must be <= 1 (energy conservation)");
+    if (const auto ior = m.find("ior")) {
+      material.ior = read_positive(*ior);
+      if (material.ior > 10) ior->fail("must be <= 10 (an index of refraction)");
+    }
+    // The lobes share the light a surface reflects or transmits: together they may not
+    // create energy.
+    for (int c = 0; c < 3; ++c) {
+      const double sum = material.diffuse[c] + material.specular[c] + material.mirror[c] +
+                         material.transmission[c];
+      if (sum > 1 + 1e-9)
+        m.fail("diffuse + specular + mirror + transmission is " + std::to_string(sum) +
+               " in channel " + "rgb"[c] + "; it must be <= 1 (energy conservation)");
+    }
     materials.push_back(material);
   }
   return materials;
@@ -325,9 +335,20 @@ PointLight read_light(const JsonNode& node) {
   return {read_vec3(node.at("position")), read_rgb(node.at("intensity"))};
 }
 
+template <typename Enum>
+Enum read_choice(const JsonNode& node, std::initializer_list<std::pair<const char*, Enum>> choices) {
+  const std::string value = read_string(node);
+  std::string expected;
+  for (const auto& [name, e] : choices) {
+    if (value == name) return e;
+    expected += std::string(expected.empty() ? "\"" : ", \"") + name + "\"";
+  }
+  node.fail("unknown value \"" + value + "\" (expected one of " + expected + ")");
+}
+
 RenderSettings read_render(const JsonNode& node) {
-  node.expect_object({"width", "height", "max_depth", "spp", "seed", "ambient",
-                      "russian_roulette"});
+  node.expect_object({"width", "height", "max_depth", "spp", "seed", "ambient", "lighting",
+                      "light_sampling", "light_cutoff", "russian_roulette", "clamp"});
   RenderSettings render;
   if (const auto n = node.find("width")) render.width = read_int(*n, 1, 8192);
   if (const auto n = node.find("height")) render.height = read_int(*n, 1, 8192);
@@ -335,6 +356,15 @@ RenderSettings read_render(const JsonNode& node) {
   if (const auto n = node.find("spp")) render.spp = read_int(*n, 1, 1000000);
   if (const auto n = node.find("seed")) render.seed = read_uint64(*n);
   if (const auto n = node.find("ambient")) render.ambient_light = read_rgb(*n);
+  if (const auto n = node.find("lighting"))
+    render.lighting = read_choice<LightingModel>(
+        *n, {{"physical", LightingModel::Physical}, {"paper", LightingModel::Paper}});
+  if (const auto n = node.find("light_sampling"))
+    render.light_sampling = read_choice<LightSampling>(
+        *n, {{"mis", LightSampling::Mis}, {"bsdf", LightSampling::Bsdf}});
+  if (const auto n = node.find("light_cutoff")) render.light_cutoff = read_positive(*n);
+  if (const auto n = node.find("clamp")) render.clamp = read_positive(*n);
+  render.russian_roulette = render.lighting == LightingModel::Physical;
   if (const auto n = node.find("russian_roulette")) render.russian_roulette = read_bool(*n);
   return render;
 }
@@ -397,7 +427,7 @@ Scene parse_scene(const Json& doc, const fs::path& base_dir) {
   if (const auto name = root.find("name")) scene.name = read_string(*name);
   scene.geometry = read_geometry(root.at("geometry"));
   if (const auto manifold = root.find("manifold"))
-    scene.manifold = read_manifold(*manifold, scene.geometry);
+    scene.manifold = read_manifold(*manifold, scene.geometry, base_dir);
   scene.camera = read_camera(root.at("camera"), scene.geometry);
 
   MaterialTable table;

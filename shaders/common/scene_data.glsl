@@ -8,6 +8,7 @@ struct Material {
   vec4 diffuse;   // k_d
   vec4 specular;  // k_s, w = shininess k_e
   vec4 mirror;
+  vec4 transmission;  // dielectric lobe weight, w = index of refraction
   vec4 emission;  // L_e
 };
 
@@ -15,7 +16,8 @@ struct Sphere {
   vec4 center;  // model point
   float radius;  // geodesic
   uint material;
-  uint pad0, pad1;
+  uint emitter;  // index into emitters, ~0u when it does not emit
+  uint pad0;
 };
 
 // One sphere's bounding box in one cell's acceleration structure.
@@ -33,10 +35,26 @@ struct TriangleInfo {
   uint material;
   uint smoothNormals;
   uint cell;
-  uint pad;
+  uint emitter;  // index into emitters, ~0u when it does not emit
 };
 
 // A cell of the chart atlas (server/render/cells.h).
+// A light source of the physical model (server/render/emitters.h).
+struct Emitter {
+  vec4 center;    // model point: light, sphere centre or triangle centroid
+  vec4 corner;    // triangle: first corner and two edges in the chart around the centroid
+  vec4 edge1;
+  vec4 edge2;
+  vec4 radiance;  // rgb: intensity (point) or emitted radiance; w: model area
+  uint kind;      // 0 point, 1 sphere, 2 triangle
+  float radius;   // sphere: geodesic radius; triangle: centroid to farthest corner
+  float pmf;
+  float cdf;
+  uint imageBegin;  // its images: isometries lightImages[imageBegin, imageBegin + imageCount)
+  uint imageCount;
+  uint pad0, pad1;
+};
+
 struct Cell {
   mat4 chartIsometry;  // model -> the cell's frame
   uint faceBegin;
@@ -68,7 +86,12 @@ layout(set = 0, binding = 2, std140) uniform Frame {
   uint russianRoulette;
   uint maxCrossings;
   uint cameraCell;
-  uint pad0, pad1;
+  uint lighting;       // 0 paper, 1 physical
+  uint lightSampling;  // 0 MIS, 1 BSDF sampling only
+  uint emitterCount;
+  float lightCutoff;   // geodesic distance
+  float clampLuminance;  // 0: no clamp
+  uint pad0;
 } frame;
 layout(set = 0, binding = 3, std430) readonly buffer Spheres { Sphere spheres[]; };
 layout(set = 0, binding = 4, std430) readonly buffer Materials { Material materials[]; };
@@ -84,6 +107,8 @@ layout(set = 0, binding = 12, std430) readonly buffer Cells { Cell cells[]; };
 layout(set = 0, binding = 13, std430) readonly buffer CellFaces { CellFace cellFaces[]; };
 // Samples dropped because they were NaN or infinite (tests require none).
 layout(set = 0, binding = 14, std430) buffer Diagnostics { uint nonFiniteSamples; };
+layout(set = 0, binding = 15, std430) readonly buffer Emitters { Emitter emitters[]; };
+layout(set = 0, binding = 16, std430) readonly buffer LightImages { mat4 lightImages[]; };
 
 // Which samples this dispatch adds, [sampleStart, sampleStart + sampleCount), to which rows:
 // the dispatch's y runs over [rowOffset, rowOffset + rowCount).

@@ -62,4 +62,7 @@ float surfaceOffsetLength(vec4 q) {
   return 1e-4 + (1.0 / 32768.0) * max(abs(q.x), max(abs(q.y), abs(q.z)));
 }
 
+// A(d): the geodesic sphere of radius d has area 4 pi A(d) (point-light falloff 1 / A(d)).
+float sphereAreaFactor(float d) { return d * d; }
+
 #endif

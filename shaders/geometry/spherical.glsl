@@ -95,4 +95,7 @@ float surfaceOffsetLength(vec4 q) {
   return 1e-4 + (1.0 / 32768.0) * max(max(abs(q.x), abs(q.y)), max(abs(q.z), abs(q.w)));
 }
 
+// A(d): the geodesic sphere of radius d has area 4 pi A(d) (point-light falloff 1 / A(d)).
+float sphereAreaFactor(float d) { return sin(d) * sin(d); }
+
 #endif

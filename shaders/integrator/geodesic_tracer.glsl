@@ -62,9 +62,10 @@ GeodesicRay crossFace(GeodesicRay ray, uint face, float t) {
 }
 
 // Follows the geodesic until it hits something within arc length maxDistance. On a hit, `ray`
-// is the segment that hit (its cell and start) and hit.t the arc length along it.
-bool followGeodesic(inout GeodesicRay ray, float maxDistance, bool anyHit, out ChartHit hit) {
-  float travelled = 0.0;
+// is the segment that hit (its cell and start) and `travelled` the arc length before it.
+bool followGeodesic(inout GeodesicRay ray, float maxDistance, bool anyHit, out ChartHit hit,
+                    out float travelled) {
+  travelled = 0.0;
   for (uint crossing = 0u; crossing <= frame.maxCrossings; ++crossing) {
     ChartLine line = chartLineOf(ray);
     float sExit;

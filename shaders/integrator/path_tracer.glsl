@@ -1,36 +1,7 @@
-// The paper's algorithms 2 and 3: a camera geodesic per sample, then at each hit emission,
-// the ambient term and direct light (eq. 2.2), and one Monte Carlo bounce, up to depth d.
+// Camera samples and accumulation: one geodesic per sample through the pinhole, traced by
+// the scene's lighting model (paper or physical), summed into the even/odd halves.
 #ifndef PATH_TRACER_GLSL
 #define PATH_TRACER_GLSL
-
-vec3 pathRadiance(GeodesicRay ray, inout uint rng) {
-  vec3 radiance = vec3(0.0);
-  vec3 throughput = vec3(1.0);
-  for (uint depth = 0u; depth <= frame.maxDepth; ++depth) {
-    ChartHit hit;
-    if (!followGeodesic(ray, FAR, false, hit)) break;  // escaped: the background is black
-    Surface s = surfaceOf(ray, hit);
-    Material m = materials[s.material];
-    LocalFrame local = localFrameAt(s.position);
-    vec3 n = toLocal(local, s.normal), ng = toLocal(local, s.geometricNormal);
-    vec3 incoming = toLocal(local, s.incoming);
-    radiance += throughput * (m.emission.rgb + m.ambient.rgb * frame.ambientLight.rgb +
-                              directIllumination(s, local, n, ng, -incoming, m));
-    if (depth == frame.maxDepth) break;
-    vec3 direction, weight;
-    if (!sampleBounce(n, ng, incoming, m, rng, direction, weight)) break;
-    throughput *= weight;
-    if (frame.russianRoulette != 0u && depth >= 1u) {
-      // Survive with probability q and divide by it: unbiased, and dim paths end early.
-      float q = min(1.0, max(throughput.r, max(throughput.g, throughput.b)));
-      if (rngNext(rng) >= q) break;
-      throughput /= q;
-    }
-    vec4 origin = offsetFromSurface(s.position, s.geometricNormal);
-    ray = GeodesicRay(origin, normalizeTangent(origin, fromLocal(local, direction)), s.cell, ~0u);
-  }
-  return radiance;
-}
 
 // One sample of pixel `pixel`: a jittered camera geodesic through the pinhole.
 vec3 pixelSample(uvec2 pixel, inout uint rng) {
@@ -42,7 +13,7 @@ vec3 pixelSample(uvec2 pixel, inout uint rng) {
   ray.v = frame.cameraPose * vec4(dir, 0.0);
   ray.cell = frame.cameraCell;
   ray.enteredFace = ~0u;
-  return pathRadiance(ray, rng);
+  return frame.lighting == 0u ? paperRadiance(ray, rng) : physicalRadiance(ray, rng);
 }
 
 // Adds push.sampleCount samples to the pixel's running sums (rgb) and counts (a), kept in two
@@ -61,6 +32,10 @@ void accumulatePixel(uvec2 launch) {
       atomicAdd(nonFiniteSamples, 1u);
       value = vec3(0.0);
     }
+    // The optional firefly clamp (biased, off by default): cap one sample's luminance.
+    float level = luminance(value);
+    if (frame.clampLuminance > 0.0 && level > frame.clampLuminance)
+      value *= frame.clampLuminance / level;
     halves[sampleIndex & 1u] += vec4(value, 1.0);
   }
   accumulation[index] += halves[0];

@@ -5,7 +5,8 @@
 
 bool occluded(GeodesicRay ray, float distance) {
   ChartHit hit;
-  return followGeodesic(ray, distance, true, hit);
+  float travelled;
+  return followGeodesic(ray, distance, true, hit, travelled);
 }
 
 // Diffuse and Phong specular terms of eq. 2.2, summed over visible point lights; n, ng and wo

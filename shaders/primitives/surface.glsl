@@ -12,7 +12,9 @@ struct Surface {
   uint material;
   uint hit;              // 0 when the ray escaped
   uint cell;             // the cell the hit was found in
-  uint pad;
+  uint emitter;          // index into emitters, ~0u when the surface does not emit
+  float t;               // arc length along the segment that hit
+  bool frontFace;        // the ray arrived on the outer (sphere) or front (triangle) side
 };
 
 Surface noSurface() {
@@ -22,11 +24,15 @@ Surface noSurface() {
   s.material = 0u;
   s.hit = 0u;
   s.cell = 0u;
+  s.emitter = ~0u;
+  s.t = FAR;
+  s.frontFace = true;
   return s;
 }
 
 Surface facing(Surface s) {
-  if (modelInner(s.geometricNormal, s.incoming) > 0.0) s.geometricNormal = -s.geometricNormal;
+  s.frontFace = modelInner(s.geometricNormal, s.incoming) <= 0.0;
+  if (!s.frontFace) s.geometricNormal = -s.geometricNormal;
   if (modelInner(s.normal, s.geometricNormal) < 0.0) s.normal = -s.normal;
   return s;
 }
@@ -43,6 +49,8 @@ Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
     s.geometricNormal = sphereNormal(sphere.center, s.position);
     s.normal = s.geometricNormal;
     s.material = sphere.material;
+    s.emitter = sphere.emitter;
+    s.t = hit.t;
     return facing(s);
   }
   // Triangle: exact in the cell's chart (geodesic planes are flat there).
@@ -66,6 +74,8 @@ Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
   float t = distanceFromChartParameter(P * ray.p, P * ray.v, hit.s);
   s.incoming = geodesicTangent(ray.p, ray.v, t);
   s.material = info.material;
+  s.emitter = info.emitter;
+  s.t = t;
   return facing(s);
 }
 

@@ -7,7 +7,8 @@ namespace geodesic::test {
 namespace {
 
 // A closed cube room, every wall emitting Le and reflecting diffusely with albedo rho; the
-// camera inside sees radiance Le * (1 - rho^(d+1)) / (1 - rho) after d bounces.
+// camera inside sees radiance Le * (1 - rho^(d+1)) / (1 - rho) after d bounces. Under the
+// paper's model every path brings exactly that (no light sampling): zero variance.
 std::string furnace(double rho, double le, int depth) {
   return R"({
     "geometry": "euclidean",
@@ -16,7 +17,8 @@ std::string furnace(double rho, double le, int depth) {
          std::to_string(le) + R"(}},
     "objects": [{"type": "box", "min": [-2, -2, -2], "max": [2, 2, 2], "material": "wall"},
                 {"type": "sphere", "center": [0.5, -1, -1], "radius": 0.5, "material": "wall"}],
-    "render": {"width": 32, "height": 32, "max_depth": )" + std::to_string(depth) + R"(}
+    "render": {"width": 32, "height": 32, "lighting": "paper", "max_depth": )" +
+         std::to_string(depth) + R"(}
   })";
 }
 

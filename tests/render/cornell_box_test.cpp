@@ -10,7 +10,7 @@ namespace {
 constexpr int kSize = 128;
 
 Scene cornell(int size = kSize) {
-  Scene scene = load_scene_file(source_path("scenes/cornell-box.json"));
+  Scene scene = paper_model(load_scene_file(source_path("scenes/cornell-box.json")));
   scene.render.width = scene.render.height = size;
   return scene;
 }

@@ -17,7 +17,7 @@ TEST(Lighting, PointLightAndShadowMatchEquationTwoPointTwo) {
       {"type": "quad", "corner": [-4, 0, 4], "edge_u": [8, 0, 0], "edge_v": [0, 0, -8], "material": "floor"},
       {"type": "sphere", "center": [0, 1, 0], "radius": 0.5, "material": "ball"}],
     "lights": [{"type": "point", "position": [0, 3, 0], "intensity": 2}],
-    "render": {"width": 64, "height": 64, "max_depth": 0, "ambient": 0.1}
+    "render": {"width": 64, "height": 64, "max_depth": 0, "ambient": 0.1, "lighting": "paper"}
   })");
   const Image image = render(scene, 4);
   // Floor point (2, 0, 0): the light is at distance sqrt(13), cos(theta) = 3 / sqrt(13).
@@ -42,7 +42,7 @@ TEST(Lighting, MirrorReflectsWhatIsBehindTheCamera) {
     "objects": [
       {"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "chrome"},
       {"type": "quad", "corner": [-10, -10, 6], "edge_u": [20, 0, 0], "edge_v": [0, 20, 0], "material": "glow"}],
-    "render": {"width": 32, "height": 32, "max_depth": 2}
+    "render": {"width": 32, "height": 32, "max_depth": 2, "lighting": "paper"}
   })");
   const Image image = render(scene, 2);
   const Rgb centre = mean(image, 14, 14, 18, 18);

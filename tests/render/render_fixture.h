@@ -27,6 +27,14 @@ inline Scene scene_from_json(const std::string& text) {
   return parse_scene(nlohmann::ordered_json::parse(text), source_path("scenes"));
 }
 
+// The scene under the paper's lighting model with its defaults (no Russian roulette): the
+// model the geometry tests were written against (eq. 2.2 is deterministic per hit).
+inline Scene paper_model(Scene scene) {
+  scene.render.lighting = LightingModel::Paper;
+  scene.render.russian_roulette = false;
+  return scene;
+}
+
 inline Image render(const Scene& scene, uint32_t spp, BackendKind backend = BackendKind::Auto) {
   Renderer renderer(device(), scene, backend);
   renderer.add_samples(spp);

@@ -311,7 +311,8 @@ TEST(SceneLoader, RejectsInvalidDocumentsNamingTheField) {
       {R"({"materials": {"red": {"shininess": -1}}})",
        "materials.red.shininess: must be a finite number >= 0"},
       {R"({"materials": {"red": {"diffuse": 0.6, "mirror": [0.1, 0.5, 0.1]}}})",
-       "materials.red: diffuse[1] + mirror[1] must be <= 1 (energy conservation)"},
+       "materials.red: diffuse + specular + mirror + transmission is 1.100000 in channel g; it "
+       "must be <= 1 (energy conservation)"},
       {R"({"objects": {}})", "objects: must be an array of objects"},
       {R"({"lights": [{"type": "spot", "position": [0, 0, 0], "intensity": 1}]})",
        R"(lights[0].type: unknown light type "spot" (expected "point"))"},
@@ -327,6 +328,17 @@ TEST(SceneLoader, RejectsInvalidDocumentsNamingTheField) {
       {R"({"render": {"seed": -1}})", "render.seed: must be an unsigned integer"},
       {R"({"render": {"russian_roulette": 1}})", "render.russian_roulette: must be true or false"},
       {R"({"render": {"ambient": -0.1}})", "render.ambient: must be a finite number >= 0"},
+      {R"({"render": {"lighting": "phong"}})",
+       "render.lighting: unknown value \"phong\" (expected one of \"physical\", \"paper\")"},
+      {R"({"render": {"light_sampling": "nee"}})",
+       "render.light_sampling: unknown value \"nee\" (expected one of \"mis\", \"bsdf\")"},
+      {R"({"render": {"light_cutoff": 0}})", "render.light_cutoff: must be > 0"},
+      {R"({"render": {"clamp": -1}})", "render.clamp: must be > 0"},
+      {R"({"materials": {"red": {"transmission": 0.5, "ior": 11}}})",
+       "materials.red.ior: must be <= 10 (an index of refraction)"},
+      {R"({"materials": {"red": {"diffuse": 0.5, "specular": 0.3, "transmission": 0.3}}})",
+       "materials.red: diffuse + specular + mirror + transmission is 1.100000 in channel r; it "
+       "must be <= 1 (energy conservation)"},
   };
   for (const auto& [patch, message] : cases) EXPECT_EQ(error_of(patch), message) << patch;
   EXPECT_EQ(error_of_document(Json::array()), "(root): must be an object");

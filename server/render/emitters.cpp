@@ -1,0 +1,194 @@
+#include "render/emitters.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "geometry/sampling.h"
+#include "scene/group_orbit.h"
+
+namespace geodesic {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+// "No cutoff" on the device: further than any float distance a ray can travel.
+constexpr double kUnbounded = 1e30;
+
+std::array<float, 4> to_float4(const Vec4& v) {
+  return {float(v.x), float(v.y), float(v.z), float(v.w)};
+}
+std::array<float, 4> to_float4(const Vec3& v, double w) {
+  return {float(v.x), float(v.y), float(v.z), float(w)};
+}
+
+// The cutoff the scene asks for, or the default: every image for a finite group (S3), one
+// copy for the whole E3 or H3, and images within the domain's circumradius R of the cell's
+// centre otherwise (at most 1 in H3, where the copies multiply exponentially).
+double resolve_cutoff(const Scene& scene, double circumradius) {
+  const GeometryKind k = scene.geometry;
+  if (scene.render.light_cutoff > 0)
+    return k == GeometryKind::Spherical ? std::min(scene.render.light_cutoff, 2 * kPi)
+                                        : scene.render.light_cutoff;
+  if (k == GeometryKind::Spherical) return 2 * kPi;
+  if (scene.manifold.faces.empty()) return kUnbounded;
+  return k == GeometryKind::Hyperbolic ? std::min(circumradius, 1.0) : circumradius;
+}
+
+struct Emitting {
+  GpuEmitter gpu{};
+  double power = 0;
+};
+
+GpuEmitter triangle_emitter(GeometryKind k, const Vec4 (&p)[3]) {
+  GpuEmitter e{};
+  const Vec4 centroid = model::normalize_point(k, p[0] + p[1] + p[2]);
+  const Mat4 to_origin = model::translation_from(k, centroid);
+  Vec3 q[3];
+  double radius = 0;
+  for (int i = 0; i < 3; ++i) {
+    q[i] = model::chart(k, to_origin * p[i]);
+    radius = std::max(radius, model::geodesic_distance(k, centroid, p[i]));
+  }
+  e.kind = uint32_t(EmitterKind::Triangle);
+  e.center = to_float4(centroid);
+  e.corner = to_float4(q[0], 1);
+  e.edge1 = to_float4(q[1] - q[0], 0);
+  e.edge2 = to_float4(q[2] - q[0], 0);
+  e.radius = float(radius);
+  return e;
+}
+
+}  // namespace
+
+double triangle_area_jacobian(GeometryKind k, const Vec3& x, const Vec3& e1, const Vec3& e2) {
+  const double K = model::curvature(k), s2 = 1 / (1 + K * dot(x, x)), c = K * s2;
+  const double xa = dot(x, e1), xb = dot(x, e2);
+  const double gaa = s2 * (dot(e1, e1) - c * xa * xa), gbb = s2 * (dot(e2, e2) - c * xb * xb);
+  const double gab = s2 * (dot(e1, e2) - c * xa * xb);
+  return std::sqrt(std::max(gaa * gbb - gab * gab, 0.0));
+}
+
+double triangle_area(GeometryKind k, const Vec4& a, const Vec4& b, const Vec4& c) {
+  if (k == GeometryKind::Euclidean) return 0.5 * length(cross(b.xyz() - a.xyz(), c.xyz() - a.xyz()));
+  const Vec4 corners[3] = {a, b, c};
+  double angles = 0;
+  for (int i = 0; i < 3; ++i) {
+    const Vec4 u = model::geodesic_direction(k, corners[i], corners[(i + 1) % 3]);
+    const Vec4 v = model::geodesic_direction(k, corners[i], corners[(i + 2) % 3]);
+    angles += std::acos(std::clamp(model::inner(k, u, v), -1.0, 1.0));
+  }
+  return k == GeometryKind::Hyperbolic ? kPi - angles : angles - kPi;
+}
+
+double domain_circumradius(GeometryKind k, const Manifold& m) {
+  double r = 0;
+  for (const Vec3& x : m.domain.vertices)
+    r = std::max(r, model::geodesic_distance(k, model::origin(), model::lift(k, x)));
+  return r;
+}
+
+std::vector<Mat4> group_elements_within(GeometryKind k, const Manifold& m, double radius,
+                                        std::size_t max_elements) {
+  if (m.faces.empty()) return {Mat4::identity()};
+  std::vector<Mat4> pairings;
+  for (const DomainFace& face : m.faces) pairings.push_back(face.pairing);
+  // The tiles a generic geodesic segment from o to gamma o crosses are adjacent in turn, and
+  // each has its centre within R of the segment: words whose prefixes stray at most R beyond
+  // radius reach every element within it.
+  std::vector<Mat4> found;
+  try {
+    const GroupOrbit orbit(k, pairings, max_elements, radius + domain_circumradius(k, m));
+    for (const GroupElement& e : orbit.elements())
+      if (e.displacement <= radius) found.push_back(e.g);
+  } catch (const GroupOrbit::TooLarge&) {
+    throw SceneError("render.light_cutoff: the light's images would need more than " +
+                     std::to_string(max_elements) + " copies of the cell (within " +
+                     std::to_string(radius) + " of its centre); lower it");
+  } catch (const GroupOrbit::Stabilised&) {
+    // Only an orbifold fixes the cell's centre; its light then has one image.
+    found = {Mat4::identity()};
+  }
+  return found;
+}
+
+EmitterTable build_emitters(const Scene& scene) {
+  const GeometryKind k = scene.geometry;
+  EmitterTable table;
+  const double circumradius = domain_circumradius(k, scene.manifold);
+  table.cutoff = resolve_cutoff(scene, circumradius);
+  std::vector<Emitting> found;
+
+  for (const PointLight& light : scene.lights) {
+    Emitting e;
+    e.gpu.kind = uint32_t(EmitterKind::Point);
+    e.gpu.center = to_float4(model::exp_origin(k, light.position));
+    e.gpu.radiance = to_float4(light.intensity, 0);
+    e.power = 4 * kPi * luminance(light.intensity);
+    if (e.power > 0) found.push_back(e);
+  }
+  table.sphere_emitter.assign(scene.spheres.size(), EmitterTable::kNone);
+  for (std::size_t s = 0; s < scene.spheres.size(); ++s) {
+    const Sphere& sphere = scene.spheres[s];
+    const Vec3 le = scene.materials[sphere.material].emission;
+    const double area = 4 * kPi * model::sphere_area_factor(k, sphere.radius);
+    if (luminance(le) <= 0) continue;
+    Emitting e;
+    e.gpu.kind = uint32_t(EmitterKind::Sphere);
+    e.gpu.center = to_float4(model::exp_origin(k, sphere.center));
+    e.gpu.radius = float(sphere.radius);
+    e.gpu.radiance = to_float4(le, area);
+    e.power = kPi * luminance(le) * area;
+    table.sphere_emitter[s] = uint32_t(found.size());
+    found.push_back(e);
+  }
+  table.triangle_emitter.resize(scene.meshes.size());
+  for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
+    const TriangleMesh& mesh = scene.meshes[m];
+    table.triangle_emitter[m].assign(mesh.indices.size() / 3, EmitterTable::kNone);
+    const Vec3 le = scene.materials[mesh.material].emission;
+    if (luminance(le) <= 0) continue;
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+      Vec4 p[3];
+      for (int i = 0; i < 3; ++i) p[i] = model::exp_origin(k, mesh.positions[mesh.indices[t + i]]);
+      const double area = triangle_area(k, p[0], p[1], p[2]);
+      if (!(area > 0)) continue;  // degenerate: nothing to sample
+      Emitting e;
+      e.gpu = triangle_emitter(k, p);
+      e.gpu.radiance = to_float4(le, area);
+      e.power = 2 * kPi * luminance(le) * area;  // both sides emit
+      table.triangle_emitter[m][t / 3] = uint32_t(found.size());
+      found.push_back(e);
+    }
+  }
+
+  double total = 0;
+  for (const Emitting& e : found) total += e.power;
+  // Images are chosen by their distance from the cell's centre, the same for every shading
+  // point, so that light sampling and its density at BSDF-found hits agree everywhere.
+  const std::vector<Mat4> group =
+      group_elements_within(k, scene.manifold, std::min(table.cutoff, kPi) + circumradius);
+  double cdf = 0;
+  for (Emitting& e : found) {
+    e.gpu.pmf = float(e.power / total);
+    cdf += e.power / total;
+    e.gpu.cdf = float(cdf);
+    const Vec4 c{e.gpu.center[0], e.gpu.center[1], e.gpu.center[2], e.gpu.center[3]};
+    std::vector<std::pair<double, const Mat4*>> near;
+    for (const Mat4& g : group) {
+      const double d = model::geodesic_distance(k, model::origin(), g * c);
+      if (d <= table.cutoff) near.push_back({d, &g});
+    }
+    std::stable_sort(near.begin(), near.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    near.resize(std::min(near.size(), kMaxImagesPerEmitter));
+    e.gpu.image_begin = uint32_t(table.images.size());
+    e.gpu.image_count = uint32_t(near.size());
+    for (const auto& [d, g] : near) table.images.push_back(g->to_glsl());
+    table.emitters.push_back(e.gpu);
+  }
+  if (!table.emitters.empty()) table.emitters.back().cdf = 1.0f;
+  return table;
+}
+
+}  // namespace geodesic

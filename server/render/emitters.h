@@ -1,0 +1,70 @@
+// What the `physical` model samples light from: point lights, emissive spheres and emissive
+// triangles, each chosen with probability proportional to its power, and each with its images
+// under the manifold's group (the copies of the cell around the domain) that next-event
+// estimation considers. Pure data, built without a device; mirrored by `Emitter` in
+// shaders/common/scene_data.glsl and read by shaders/lights/emitters.glsl.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "scene/scene.h"
+
+namespace geodesic {
+
+enum class EmitterKind : uint32_t { Point = 0, Sphere = 1, Triangle = 2 };
+
+struct GpuEmitter {
+  std::array<float, 4> center;    // model point: the light, the sphere's centre, the
+                                  // triangle's centroid
+  std::array<float, 4> corner;    // triangle: first corner in the chart around the centroid
+  std::array<float, 4> edge1;     // triangle: the two edges from it, same chart
+  std::array<float, 4> edge2;
+  std::array<float, 4> radiance;  // rgb: intensity (point) or emitted radiance; w: model area
+  uint32_t kind;
+  float radius;  // sphere: geodesic radius; triangle: largest distance centroid - corner
+  float pmf;     // probability of choosing this emitter
+  float cdf;     // sum of pmf up to and including this one
+  uint32_t image_begin;  // its images: image_count isometries from image_begin in `images`
+  uint32_t image_count;
+  uint32_t padding[2];
+};
+static_assert(sizeof(GpuEmitter) == 112, "must match the std430 layout of Emitter");
+
+// Images kept per emitter: those within the cutoff of the cell's centre (the origin), at
+// most this many, nearest first. In S3 the long way round is also taken when the cutoff
+// exceeds pi.
+constexpr std::size_t kMaxImagesPerEmitter = 64;
+
+struct EmitterTable {
+  std::vector<GpuEmitter> emitters;
+  std::vector<std::array<float, 16>> images;  // column-major isometries of the universal cover
+  std::vector<uint32_t> sphere_emitter;       // per scene sphere: its emitter, or kNone
+  std::vector<std::vector<uint32_t>> triangle_emitter;  // per mesh, per triangle
+  double cutoff = 0;  // light_cutoff as resolved (geodesic distance)
+  static constexpr uint32_t kNone = ~0u;
+};
+
+// Throws SceneError ("render.light_cutoff: ...") when the cutoff asks for more group elements
+// than the enumeration allows.
+EmitterTable build_emitters(const Scene& scene);
+
+// The model area element of a triangle with respect to its barycentrics, at chart point x of
+// a chart centred near it: sqrt det of the metric g = s^2 (I - K s^2 x x^T), s^2 = 1 / (1 +
+// K |x|^2), on the edges e1 and e2. Twin of triangleAreaJacobian (shaders/lights/emitters.glsl).
+double triangle_area_jacobian(GeometryKind k, const Vec3& x, const Vec3& e1, const Vec3& e2);
+
+// The model area of the geodesic triangle abc (angle excess or defect in H3 and S3).
+double triangle_area(GeometryKind k, const Vec4& a, const Vec4& b, const Vec4& c);
+
+// The group elements gamma of the manifold with d(o, gamma o) <= radius (o the origin), as
+// words in the face pairings (scene/group_orbit.h); the identity alone for the whole space.
+// Throws SceneError past `max_elements`.
+std::vector<Mat4> group_elements_within(GeometryKind k, const Manifold& m, double radius,
+                                        std::size_t max_elements = 4096);
+
+// Largest geodesic distance from the origin to a vertex of the fundamental domain.
+double domain_circumradius(GeometryKind k, const Manifold& m);
+
+}  // namespace geodesic

@@ -1,0 +1,37 @@
+// The paper's model (Novello et al. 2019, algorithms 2 and 3): at each hit emission, the
+// ambient term and direct light from point lights (eq. 2.2), then one Monte Carlo bounce, up
+// to depth d.
+#ifndef PAPER_INTEGRATOR_GLSL
+#define PAPER_INTEGRATOR_GLSL
+
+vec3 paperRadiance(GeodesicRay ray, inout uint rng) {
+  vec3 radiance = vec3(0.0);
+  vec3 throughput = vec3(1.0);
+  for (uint depth = 0u; depth <= frame.maxDepth; ++depth) {
+    ChartHit hit;
+    float travelled;
+    if (!followGeodesic(ray, FAR, false, hit, travelled)) break;  // escaped: black background
+    Surface s = surfaceOf(ray, hit);
+    Material m = materials[s.material];
+    LocalFrame local = localFrameAt(s.position);
+    vec3 n = toLocal(local, s.normal), ng = toLocal(local, s.geometricNormal);
+    vec3 incoming = toLocal(local, s.incoming);
+    radiance += throughput * (m.emission.rgb + m.ambient.rgb * frame.ambientLight.rgb +
+                              directIllumination(s, local, n, ng, -incoming, m));
+    if (depth == frame.maxDepth) break;
+    vec3 direction, weight;
+    if (!sampleBounce(n, ng, incoming, m, rng, direction, weight)) break;
+    throughput *= weight;
+    if (frame.russianRoulette != 0u && depth >= 1u) {
+      // Survive with probability q and divide by it: unbiased, and dim paths end early.
+      float q = min(1.0, max(throughput.r, max(throughput.g, throughput.b)));
+      if (rngNext(rng) >= q) break;
+      throughput /= q;
+    }
+    vec4 origin = offsetFromSurface(s.position, s.geometricNormal);
+    ray = GeodesicRay(origin, normalizeTangent(origin, fromLocal(local, direction)), s.cell, ~0u);
+  }
+  return radiance;
+}
+
+#endif

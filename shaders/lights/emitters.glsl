@@ -1,0 +1,195 @@
+// Light sampling for the physical model (next-event estimation) and the density of the same
+// strategy for directions found by BSDF sampling (multiple importance sampling). An emitter
+// is chosen by power; then one of its geodesics from the shading point: one per image of the
+// emitter under the manifold's group (server/render/emitters.h), and in S3 also the long way
+// round (distance 2 pi - d), each weighted by how much light it can bring, up to
+// render.light_cutoff (server/render/emitters.h). A point light at distance d gives irradiance I cos / A(d); an area light
+// is sampled by solid angle (spheres: the cone they subtend) or by area with the Jacobian
+// A(d) / cos (triangles), A(d) = d^2, sinh^2 d or sin^2 d.
+#ifndef EMITTERS_GLSL
+#define EMITTERS_GLSL
+
+const uint EMITTER_POINT = 0u;
+const uint EMITTER_SPHERE = 1u;
+const uint EMITTER_TRIANGLE = 2u;
+const float FULL_TURN = 6.28318530717958647692;
+
+// Branch b of the geodesics from a point at distance d: 0 the direct one, 1 the long way
+// round (S3 only).
+uint branchCount() { return GEOMETRY_CURVATURE > 0.0 ? 2u : 1u; }
+float branchDistance(float d, uint branch) { return branch == 0u ? d : FULL_TURN - d; }
+
+// How much the geodesic of branch b to the emitter's image at distance d (direction
+// `toward`) may bring: the selection weight. The long way round counts when the cutoff
+// exceeds pi; inside a sphere only the direct branch reaches its surface first; a point light
+// behind the surface (geometric normal ng, zero to skip the test) brings nothing.
+float branchWeight(Emitter e, float d, uint branch, vec4 toward, vec4 ng) {
+  if (branch == 1u && frame.lightCutoff <= PI) return 0.0;
+  if (e.kind == EMITTER_SPHERE && d <= e.radius) return branch == 0u ? 4.0 * PI : 0.0;
+  float spread = max(sphereAreaFactor(branchDistance(d, branch)), 1e-12);
+  if (e.kind != EMITTER_POINT) return min(4.0 * PI, e.radiance.w / spread);
+  return (branch == 0u ? 1.0 : -1.0) * modelInner(toward, ng) < 0.0 ? 0.0 : 1.0 / spread;
+}
+
+// The sum of branchWeight over the emitter's images and branches, seen from x.
+float totalBranchWeight(Emitter e, vec4 x, vec4 ng) {
+  float total = 0.0;
+  for (uint j = 0u; j < e.imageCount; ++j) {
+    vec4 c = lightImages[e.imageBegin + j] * e.center;
+    float d = geodesicDistance(x, c);
+    vec4 toward = e.kind == EMITTER_POINT ? geodesicDirection(x, c) : vec4(0.0);
+    for (uint b = 0u; b < branchCount(); ++b) total += branchWeight(e, d, b, toward, ng);
+  }
+  return total;
+}
+
+// The emitter whose cdf range holds u (binary search).
+uint chooseEmitter(float u) {
+  uint lo = 0u, hi = frame.emitterCount - 1u;
+  while (lo < hi) {
+    uint mid = (lo + hi) / 2u;
+    if (u < emitters[mid].cdf) hi = mid;
+    else lo = mid + 1u;
+  }
+  return lo;
+}
+
+// The triangle emitter's model area density with respect to its barycentrics at chart point
+// xc (chart around its centroid): sqrt det of the metric g = s^2 (I - K s^2 x x^T),
+// s^2 = 1 / (1 + K |x|^2), on its edges.
+float triangleAreaJacobian(Emitter e, vec3 xc) {
+  float s2 = 1.0 / (1.0 + GEOMETRY_CURVATURE * dot(xc, xc));
+  vec3 a = e.edge1.xyz, b = e.edge2.xyz;
+  float xa = dot(xc, a), xb = dot(xc, b), k = GEOMETRY_CURVATURE * s2;
+  float gaa = s2 * (dot(a, a) - k * xa * xa), gbb = s2 * (dot(b, b) - k * xb * xb);
+  float gab = s2 * (dot(a, b) - k * xa * xb);
+  return sqrt(max(gaa * gbb - gab * gab, 0.0));
+}
+
+struct LightSample {
+  vec4 direction;  // unit tangent at the shading point
+  float distance;  // to the light point
+  vec3 radiance;   // L_e, or I / A(d) for a point light
+  float pdf;       // solid-angle density (point light: the probability of the choice)
+  bool point;
+};
+
+// One light sample seen from x (unit local frame `local` at x, geometric normal ng); false
+// when none applies.
+bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) {
+  ls = LightSample(vec4(0.0), 0.0, vec3(0.0), 0.0, false);
+  if (frame.emitterCount == 0u) return false;
+  uint index = chooseEmitter(u.x);
+  Emitter e = emitters[index];
+  float total = totalBranchWeight(e, x, ng);
+  if (total <= 0.0) return false;
+  // Pick an image and branch in proportion to their weights (the last one that can be
+  // picked catches float round-off in the running sum).
+  float target = u.y * total, w = 0.0;
+  uint image = e.imageCount, branch = 0u;
+  for (uint j = 0u; j < e.imageCount; ++j) {
+    vec4 cj = lightImages[e.imageBegin + j] * e.center;
+    float dj = geodesicDistance(x, cj);
+    vec4 toward = e.kind == EMITTER_POINT ? geodesicDirection(x, cj) : vec4(0.0);
+    for (uint b = 0u; b < branchCount(); ++b) {
+      float wb = branchWeight(e, dj, b, toward, ng);
+      if (wb <= 0.0 || target < 0.0) continue;
+      image = j;
+      branch = b;
+      w = wb;
+      target -= wb;
+    }
+  }
+  if (image == e.imageCount) return false;
+  float choice = w / total;
+  mat4 g = lightImages[e.imageBegin + image];
+  vec4 c = g * e.center;
+  float d = geodesicDistance(x, c);
+  float sign = branch == 0u ? 1.0 : -1.0;
+  vec4 toward = geodesicDirection(x, c);
+  if (dot(toward, toward) == 0.0 && e.kind != EMITTER_SPHERE) return false;
+  ls.pdf = e.pmf * choice;
+  if (e.kind == EMITTER_POINT) {
+    ls.direction = sign * toward;
+    ls.distance = branchDistance(d, branch);
+    ls.radiance = e.radiance.rgb / max(sphereAreaFactor(ls.distance), 1e-12);
+    ls.point = true;
+    return true;
+  }
+  if (e.kind == EMITTER_SPHERE) {
+    // Directions towards the sphere: its cone, sin(alpha) = sqrt(A(r) / A(d)); all of them
+    // from inside.
+    float cosMax = -1.0;
+    vec3 axis = vec3(0.0, 0.0, 1.0);
+    if (d > e.radius) {
+      cosMax = sqrt(max(0.0, 1.0 - sphereAreaFactor(e.radius) / sphereAreaFactor(d)));
+      axis = sign * toLocal(local, toward);
+    }
+    ls.direction = fromLocal(local, sampleUniformCone(axis, cosMax, u.zw));
+    float t = intersectGeodesicSphere(x, ls.direction, c, e.radius, 0.0, FAR);
+    if (t <= 0.0) return false;
+    ls.distance = t;
+    ls.radiance = e.radiance.rgb;
+    ls.pdf *= 1.0 / (2.0 * PI * (1.0 - cosMax));
+    return true;
+  }
+  // Triangle: a point by area, in the chart around its centroid.
+  vec2 bary = sampleUniformTriangle(u.zw);
+  vec3 xc = e.corner.xyz + bary.x * e.edge1.xyz + bary.y * e.edge2.xyz;
+  mat4 place = g * translationTo(e.center);
+  vec4 q = liftChart(xc);
+  vec4 y = normalizePoint(place * q);
+  vec3 planeNormal = normalize(cross(e.edge1.xyz, e.edge2.xyz));
+  vec4 normal = place * chartPlaneNormal(q, planeNormal, dot(planeNormal, e.corner.xyz));
+  vec4 direct = geodesicDirection(x, y);
+  if (dot(direct, direct) == 0.0) return false;
+  float dy = geodesicDistance(x, y);
+  ls.direction = sign * direct;
+  ls.distance = branchDistance(dy, branch);
+  float cosLight = abs(modelInner(geodesicTangent(x, ls.direction, ls.distance), normal));
+  if (cosLight <= 1e-7) return false;
+  ls.radiance = e.radiance.rgb;
+  ls.pdf *= 2.0 / triangleAreaJacobian(e, xc) * sphereAreaFactor(ls.distance) / cosLight;
+  return true;
+}
+
+// The density with which sampleLight at x would have produced the direction `direction` that
+// reached emitter `index` after arc length t, arriving at cosine cosLight to its surface.
+float lightPdf(uint index, vec4 x, vec4 direction, float t, float cosLight) {
+  Emitter e = emitters[index];
+  if (e.kind == EMITTER_POINT) return 0.0;
+  float total = totalBranchWeight(e, x, vec4(0.0));
+  if (total <= 0.0) return 0.0;
+  vec4 y = normalizePoint(geodesicPoint(x, direction, t));  // the hit point, in x's copy
+  uint branch = GEOMETRY_CURVATURE > 0.0 && t > PI ? 1u : 0u;
+  // The image the geodesic met: the one whose surface passes closest to y.
+  uint image = 0u;
+  float best = FAR, d = 0.0;
+  for (uint j = 0u; j < e.imageCount; ++j) {
+    float dj = geodesicDistance(y, lightImages[e.imageBegin + j] * e.center);
+    float miss = e.kind == EMITTER_SPHERE ? abs(dj - e.radius) : dj;
+    if (miss < best) {
+      best = miss;
+      image = j;
+    }
+  }
+  // A copy of the emitter beyond the cutoff: light sampling never picks it.
+  float slack = 1e-3 * (1.0 + t);
+  if (e.imageCount == 0u || best > (e.kind == EMITTER_SPHERE ? slack : e.radius + slack))
+    return 0.0;
+  mat4 g = lightImages[e.imageBegin + image];
+  d = geodesicDistance(x, g * e.center);
+  float choice = branchWeight(e, d, branch, vec4(0.0), vec4(0.0)) / total;
+  if (choice <= 0.0) return 0.0;
+  if (e.kind == EMITTER_SPHERE) {
+    float cosMax = d > e.radius
+                       ? sqrt(max(0.0, 1.0 - sphereAreaFactor(e.radius) / sphereAreaFactor(d)))
+                       : -1.0;
+    return e.pmf * choice / (2.0 * PI * (1.0 - cosMax));
+  }
+  vec3 xc = chartPoint(translationFrom(e.center) * (inverseIsometry(g) * y));
+  return e.pmf * choice * 2.0 / triangleAreaJacobian(e, xc) * sphereAreaFactor(t) /
+         max(cosLight, 1e-7);
+}
+
+#endif

@@ -1,0 +1,130 @@
+// The physical model against closed forms: white furnaces in E3, H3 and S3 (radiance
+// L_e / (1 - albedo)), a point light's irradiance I cos / A(d) on a small patch in each
+// geometry, and light sampling (NEE + MIS) agreeing with BSDF sampling alone.
+#include <cmath>
+#include <string>
+
+#include "geometry/model.h"
+#include "render_fixture.h"
+
+namespace geodesic::test {
+namespace {
+
+double luminance_of(const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+// sqrt(sum (Y_a - Y_b)^2 / sum Y_b^2) over pixel luminances Y: the error measure of
+// Renderer::estimated_error between two images.
+double relative_rms_difference(const Image& a, const Image& b) {
+  double difference = 0, signal = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      const Rgb pa = mean(a, x, y, x + 1, y + 1), pb = mean(b, x, y, x + 1, y + 1);
+      difference += std::pow(luminance_of(pa) - luminance_of(pb), 2);
+      signal += std::pow(luminance_of(pb), 2);
+    }
+  return std::sqrt(difference / signal);
+}
+
+// A closed grey sphere around the camera, albedo 0.5 and emission 1: every pixel converges to
+// 1 / (1 - 0.5) = 2.
+std::string sphere_furnace(const char* geometry, double radius) {
+  return std::string(R"({"geometry": ")") + geometry + R"(",
+    "camera": {"position": [0.1, -0.2, 0.15], "rotation": {"yaw": 30, "pitch": 10}, "fov_y": 90},
+    "materials": {"grey": {"diffuse": 0.5, "emission": 1}},
+    "objects": [{"type": "sphere", "material": "grey", "center": [0, 0, 0], "radius": )" +
+         std::to_string(radius) + R"(}],
+    "render": {"width": 24, "height": 24, "max_depth": 40, "lighting": "physical"}})";
+}
+
+void expect_furnace(const Scene& scene, uint32_t spp) {
+  Renderer renderer(device(), scene);
+  renderer.add_samples(spp);
+  const Rgb m = mean(renderer.image());
+  EXPECT_NEAR(m.r, 2.0, 0.02) << scene.name;
+  EXPECT_NEAR(m.g, 2.0, 0.02);
+  EXPECT_NEAR(m.b, 2.0, 0.02);
+  EXPECT_EQ(renderer.non_finite_samples(), 0u);
+}
+
+TEST(WhiteFurnace, EuclideanBoxOfEmittingTriangles) {
+  Scene scene = load_scene_file(source_path("scenes/furnace.json"));
+  scene.render.lighting = LightingModel::Physical;
+  scene.render.width = scene.render.height = 24;
+  expect_furnace(scene, 256);
+}
+
+TEST(WhiteFurnace, HyperbolicSphere) { expect_furnace(scene_from_json(sphere_furnace("hyperbolic", 1.5)), 256); }
+
+TEST(WhiteFurnace, SphericalSphere) { expect_furnace(scene_from_json(sphere_furnace("spherical", 1.2)), 256); }
+
+// Without next-event estimation the furnace converges to the same value: emission found by
+// BSDF sampling alone.
+TEST(WhiteFurnace, BsdfSamplingAloneAgrees) {
+  Scene scene = scene_from_json(sphere_furnace("hyperbolic", 1.5));
+  scene.render.light_sampling = LightSampling::Bsdf;
+  expect_furnace(scene, 256);
+}
+
+// A white Lambertian patch (albedo 0.5) facing a point light of intensity 3 at the camera:
+// radiance 0.5 / pi * 3 / A(d) with A(d) = d^2, sinh^2 d or sin^2 d.
+void expect_point_light_falloff(GeometryKind kind, double d) {
+  const double half = 0.02;
+  const std::string doc = std::string(R"({"geometry": ")") + geometry_name(kind) + R"(",
+    "camera": {"position": [0, 0, 0], "look_at": [0, 0, -1], "fov_y": 0.5},
+    "materials": {"white": {"diffuse": 0.5}},
+    "objects": [{"type": "quad", "material": "white", "corner": [)" + std::to_string(-half) +
+    ", " + std::to_string(-half) + ", " + std::to_string(-d) + R"(],
+      "edge_u": [)" + std::to_string(2 * half) + R"(, 0, 0], "edge_v": [0, )" +
+    std::to_string(2 * half) + R"(, 0]}],
+    "lights": [{"type": "point", "position": [0, 0, 0], "intensity": 3}],
+    "render": {"width": 8, "height": 8, "max_depth": 0, "lighting": "physical"}})";
+  const Scene scene = scene_from_json(doc);
+  // The quad's corners lie at distance d along their own directions; its centre, where the
+  // axis meets the chart plane through them, is a little nearer in H3 and S3.
+  const Vec4 corner = model::exp_origin(kind, {half, half, -d});
+  const Vec4 centre = model::lift(kind, {0, 0, corner.z / corner.w});
+  const double distance = model::geodesic_distance(kind, model::origin(), centre);
+  const double expected = 0.5 / M_PI * 3 / model::sphere_area_factor(kind, distance);
+  const Rgb m = mean(render(scene, 16));
+  EXPECT_NEAR(luminance_of(m), expected, 0.02 * expected)
+      << geometry_name(kind) << " at distance " << distance;
+}
+
+TEST(PointLight, IrradianceFallsOffAsOneOverAreaFactor) {
+  for (GeometryKind kind : {GeometryKind::Euclidean, GeometryKind::Hyperbolic, GeometryKind::Spherical})
+    expect_point_light_falloff(kind, 1.2);
+  expect_point_light_falloff(GeometryKind::Hyperbolic, 2.5);  // sinh^2 d, not d^2: 6x apart
+  expect_point_light_falloff(GeometryKind::Spherical, 2.4);   // past pi/2: sin^2 d grows again
+}
+
+// The same scene lit by area lights, rendered with light sampling + BSDF sampling (MIS) and
+// with BSDF sampling alone: equal within the noise both report.
+void expect_mis_matches_bsdf_sampling(Scene scene, uint32_t spp) {
+  scene.render.lighting = LightingModel::Physical;
+  scene.render.width = std::min(scene.render.width, 48);
+  scene.render.height = std::min(scene.render.height, 48);
+  Renderer mis(device(), scene);
+  mis.add_samples(spp);
+  scene.render.light_sampling = LightSampling::Bsdf;
+  Renderer bsdf(device(), scene);
+  bsdf.add_samples(spp);
+  const Image a = mis.image(), b = bsdf.image();
+  const double mean_a = luminance_of(mean(a)), mean_b = luminance_of(mean(b));
+  EXPECT_GT(mean_a, 0.01) << scene.name;
+  // The image means: far less noisy than single pixels, so a tight bound.
+  EXPECT_NEAR(mean_a, mean_b, 0.03 * mean_b) << scene.name;
+  // Per pixel: independent unbiased estimates differ by what their noise explains, i.e. their
+  // relative RMS difference is about the two estimated errors added in quadrature.
+  const double noise = std::hypot(mis.estimated_error(), bsdf.estimated_error());
+  EXPECT_LT(relative_rms_difference(a, b), 1.5 * noise) << scene.name;
+  EXPECT_LT(mis.estimated_error(), bsdf.estimated_error()) << scene.name;
+  EXPECT_EQ(mis.non_finite_samples() + bsdf.non_finite_samples(), 0u);
+}
+
+TEST(Mis, AgreesWithBsdfSamplingInEveryGeometry) {
+  for (const char* name : {"hyperbolic-lamps.json", "spherical-lamps.json", "torus-lamps.json"})
+    expect_mis_matches_bsdf_sampling(load_scene_file(source_path("scenes/") / name), 64);
+}
+
+}  // namespace
+}  // namespace geodesic::test
