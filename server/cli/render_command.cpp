@@ -1,22 +1,29 @@
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "cli/progress_bar.h"
+#include "cli/render_report.h"
+#include "render/convergence.h"
 #include "render/image_io.h"
 #include "render/renderer.h"
+#include "scene/default_scene.h"
 #include "scene/scene_loader.h"
 
 namespace geodesic {
 namespace {
 
 struct RenderArgs {
-  std::string scene, output, device, backend = "auto";
+  std::string scene, generators, output, device, backend = "auto", lighting;
   std::optional<int> spp, width, height, max_depth;
   std::optional<uint64_t> seed;
-  std::optional<double> seconds;
+  std::optional<double> seconds, target_error;
+  std::string report;  // --report FILE.json: the series, also as FILE.csv
 };
 
 long parse_int(const std::string& flag, const std::string& value, long min, long max) {
@@ -50,19 +57,48 @@ RenderArgs parse(int argc, char** argv) {
       if (!(s > 0)) throw std::invalid_argument("--time: must be a number of seconds > 0");
       a.seconds = s;
     }
+    else if (flag == "--target-error") {
+      const std::string v = value();
+      size_t used = 0;
+      double e = 0;
+      try { e = std::stod(v, &used); } catch (const std::exception&) { used = 0; }
+      if (used != v.size() || !(e > 0 && e < 1))
+        throw std::invalid_argument("--target-error: must be a relative error in (0, 1), not \"" +
+                                    v + "\"");
+      a.target_error = e;
+    }
+    else if (flag == "--report") {
+      a.report = value();
+      if (std::filesystem::path(a.report).extension() != ".json")
+        throw std::invalid_argument("--report: must name a .json file (the CSV goes next to it)");
+    }
     else if (flag == "--width") a.width = parse_int(flag, value(), 1, 8192);
     else if (flag == "--height") a.height = parse_int(flag, value(), 1, 8192);
     else if (flag == "--max-depth") a.max_depth = parse_int(flag, value(), 0, 64);
     else if (flag == "--seed") a.seed = parse_int(flag, value(), 0, 1L << 62);
     else if (flag == "--device") a.device = value();
+    else if (flag == "--generators") a.generators = value();
     else if (flag == "--backend") a.backend = value();
+    else if (flag == "--lighting") {
+      a.lighting = value();
+      if (a.lighting != "physical" && a.lighting != "paper")
+        throw std::invalid_argument("--lighting: must be \"physical\" or \"paper\", not \"" +
+                                    a.lighting + "\"");
+    }
     else if (!flag.empty() && flag[0] == '-') throw std::invalid_argument("unknown option " + flag);
     else if (a.scene.empty()) a.scene = flag;
     else throw std::invalid_argument("unexpected argument \"" + flag + "\"");
   }
-  if (a.scene.empty()) throw std::invalid_argument("missing SCENE.json");
+  if (a.scene.empty() == a.generators.empty())
+    throw std::invalid_argument("give one of SCENE.json and --generators FILE.gen");
   if (a.output.empty()) throw std::invalid_argument("missing -o OUT.{png,exr,jpg}");
-  if (a.spp && a.seconds) throw std::invalid_argument("--spp and --time: give one, not both");
+  // Exactly one stop condition; the scene's spp when none is given.
+  std::vector<std::string> stops;
+  if (a.spp) stops.push_back("--spp");
+  if (a.seconds) stops.push_back("--time");
+  if (a.target_error) stops.push_back("--target-error");
+  if (stops.size() > 1)
+    throw std::invalid_argument(stops[0] + " and " + stops[1] + ": give one, not both");
   return a;
 }
 
@@ -72,12 +108,23 @@ int render_command(int argc, char** argv) {
   const RenderArgs args = parse(argc, argv);
   const BackendKind backend = parse_backend(args.backend);
   check_output_format(args.output);
-  Scene scene = load_scene_file(args.scene);
+  // A generator file gets the default scene inside its Dirichlet domain.
+  Scene scene = args.generators.empty() ? load_scene_file(args.scene)
+                                        : parse_scene(generator_file_scene(args.generators), {});
   if (args.width) scene.render.width = *args.width;
   if (args.height) scene.render.height = *args.height;
   if (args.max_depth) scene.render.max_depth = *args.max_depth;
   if (args.seed) scene.render.seed = *args.seed;
-  const uint32_t target_spp = static_cast<uint32_t>(args.spp.value_or(scene.render.spp));
+  if (!args.lighting.empty()) {
+    // The model's own Russian-roulette default comes with it.
+    scene.render.lighting = args.lighting == "paper" ? LightingModel::Paper : LightingModel::Physical;
+    scene.render.russian_roulette = scene.render.lighting == LightingModel::Physical;
+  }
+  StopCondition stop;
+  stop.seconds = args.seconds;
+  stop.target_error = args.target_error;
+  if (!args.seconds && !args.target_error)
+    stop.spp = uint32_t(args.spp.value_or(scene.render.spp));
 
   VulkanContext ctx(args.device);
   Renderer renderer(ctx, scene, backend);
@@ -86,18 +133,29 @@ int render_command(int argc, char** argv) {
   const auto start = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
 
-  // Batches grow until one takes about a quarter second: few submissions, live progress.
+  // Batches grow until one takes about a quarter second: few submissions, live progress, and a
+  // dense series early on. One point of the series after every batch.
+  ConvergenceLog log;
   uint32_t batch = 1;
-  while (args.seconds ? elapsed() < *args.seconds : renderer.samples() < target_spp) {
-    if (!args.seconds) batch = std::min(batch, target_spp - renderer.samples());
+  ErrorSample now;
+  const char* stopped_by = nullptr;
+  while (!(stopped_by = stop.met(now))) {
+    if (stop.spp) batch = std::min(batch, *stop.spp - renderer.samples());
+    // Error falls as 1/sqrt(spp): do not overshoot the samples the target needs by much.
+    if (stop.target_error && now.error > 0 && now.spp >= 8) {
+      const double needed = now.spp * std::pow(now.error / *stop.target_error, 2) - now.spp;
+      batch = std::min<uint32_t>(batch, uint32_t(std::clamp(std::ceil(needed), 1.0, 64.0)));
+    }
     const double before = elapsed();
     renderer.add_samples(batch);
     const double took = elapsed() - before;
     if (took < 0.25 && batch < 64) batch *= 2;
-    const double fraction = args.seconds ? elapsed() / *args.seconds
-                                         : double(renderer.samples()) / target_spp;
-    bar.update(fraction, std::to_string(renderer.samples()) + " spp, " +
-                             std::to_string(elapsed()).substr(0, 5) + " s");
+    now = {elapsed(), renderer.samples(), renderer.estimated_error()};
+    log.record(now);
+    const std::string error =
+        now.error >= 0 ? ", error " + std::to_string(now.error).substr(0, 6) : "";
+    bar.update(stop.progress(now), std::to_string(now.spp) + " spp, " +
+                                       std::to_string(now.seconds).substr(0, 5) + " s" + error);
   }
   const double seconds = elapsed();
   bar.finish();
@@ -108,6 +166,13 @@ int render_command(int argc, char** argv) {
               args.output.c_str(), renderer.samples(), scene.render.width, scene.render.height,
               scene.render.max_depth, seconds, paths / seconds / 1e6, renderer.backend_name(),
               ctx.description().name.c_str());
+  if (!args.report.empty()) {
+    RenderReport report{args.scene.empty() ? args.generators : args.scene,
+                        geometry_name(scene.geometry), ctx.description().name,
+                        renderer.backend_name(), scene.render.width, scene.render.height,
+                        renderer.samples(), seconds, now.error, stop, stopped_by, log};
+    write_render_report(args.report, report);
+  }
   return 0;
 }
 

@@ -2,27 +2,16 @@
 // and reduced resolutions.
 #include <cmath>
 
+#include "render/relative_error.h"
 #include "render_fixture.h"
 
 namespace geodesic::test {
 namespace {
 
 Scene small_cornell() {
-  Scene scene = load_scene_file(source_path("scenes/cornell-box.json"));
+  Scene scene = paper_model(load_scene_file(source_path("scenes/cornell-box.json")));
   scene.render.width = scene.render.height = 48;
   return scene;
-}
-
-double relative_rms(const Image& image, const Image& reference) {
-  double difference = 0, signal = 0;
-  for (size_t i = 0; i < image.rgb.size(); i += 3) {
-    auto y = [&](const Image& im) {
-      return 0.2126 * im.rgb[i] + 0.7152 * im.rgb[i + 1] + 0.0722 * im.rgb[i + 2];
-    };
-    difference += (y(image) - y(reference)) * (y(image) - y(reference));
-    signal += y(reference) * y(reference);
-  }
-  return std::sqrt(difference / signal);
 }
 
 TEST(Progressive, EstimatedErrorTracksTheTrueErrorAndFallsAsOneOverRootN) {
@@ -34,7 +23,7 @@ TEST(Progressive, EstimatedErrorTracksTheTrueErrorAndFallsAsOneOverRootN) {
   const double e8 = renderer.estimated_error();
   renderer.add_samples(24);
   const double e32 = renderer.estimated_error();
-  const double true32 = relative_rms(renderer.image(), reference);
+  const double true32 = relative_rmse(renderer.image(), reference);
   EXPECT_NEAR(e32 / e8, 0.5, 0.12);             // 1/sqrt(4)
   EXPECT_NEAR(e32 / true32, 1.0, 0.35);         // an estimate, not a bound
 }
