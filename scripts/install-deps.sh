@@ -2,7 +2,16 @@
 # Installs everything Geodesic needs to build and test on Debian 12 (bookworm), as root.
 # Lavapipe with ray tracing needs Mesa >= 24.1, which bookworm only has in backports; the
 # backports entry is derived from the machine's own Debian sources so no mirror is hard-coded.
+#   install-deps.sh            build and test (the README's steps)
+#   install-deps.sh --build    build only: no browser, Node.js or linters (docker/Dockerfile)
+#   install-deps.sh --runtime  what `geodesic serve` needs to run (the container's last stage)
 set -euo pipefail
+
+mode=${1:---all}
+case "$mode" in
+  --all | --build | --runtime) ;;
+  *) echo "usage: install-deps.sh [--build | --runtime]" >&2; exit 2 ;;
+esac
 
 if [ "$(id -u)" -ne 0 ]; then
   echo "install-deps: run as root (apt-get needs it)" >&2
@@ -30,22 +39,33 @@ debian_archive_uri() {
   done
 }
 
-packages=(
-  build-essential cmake ninja-build pkg-config git ca-certificates
-  libvulkan-dev vulkan-tools glslang-tools glslang-dev spirv-tools
-  nlohmann-json3-dev libopenimageio-dev openimageio-tools
-  libgtest-dev libgmock-dev libassimp-dev
-  libboost-dev libboost-system-dev libsqlite3-dev libturbojpeg0-dev
-  python3
-)
+if [ "$mode" = --runtime ]; then
+  # The shared libraries the binary links (their own dependencies follow), and curl for the
+  # container's health check.
+  packages=(libvulkan1 libopenimageio2.4 libturbojpeg0 libassimp5 libminizip1 libdraco7
+            libsqlite3-0 curl)
+else
+  packages=(
+    build-essential cmake ninja-build pkg-config git ca-certificates
+    libvulkan-dev vulkan-tools glslang-tools glslang-dev spirv-tools
+    nlohmann-json3-dev libopenimageio-dev openimageio-tools
+    libgtest-dev libgmock-dev libassimp-dev
+    libboost-dev libboost-system-dev libsqlite3-dev libturbojpeg0-dev
+    python3
+  )
+fi
 # Browser tests of the web client (tests/web): Debian's Chromium, driven by playwright-core
-# from npm. Node.js only if the machine has none (an existing one may not be Debian's).
-packages+=(chromium)
-{ command -v node && command -v npm; } >/dev/null 2>&1 || packages+=(nodejs npm)
+# from npm, which also brings the linters of docker/ and proto/openapi.json. Node.js only if
+# the machine has none (an existing one may not be Debian's).
+if [ "$mode" = --all ]; then
+  packages+=(chromium)
+  { command -v node && command -v npm; } >/dev/null 2>&1 || packages+=(nodejs npm)
+fi
 
 # playwright-core, pinned by tests/web/package-lock.json; `npm ci` again only when the lock file
 # is newer than the installed tree (npm ci writes node_modules/.package-lock.json).
 install_web_test_deps() {
+  [ "$mode" = --all ] || return 0
   local dir
   dir="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/tests/web"
   if [ "$dir/package-lock.json" -nt "$dir/node_modules/.package-lock.json" ]; then

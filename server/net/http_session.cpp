@@ -6,29 +6,22 @@
 
 #include <nlohmann/json.hpp>
 
+#include "jobs/job_routes.h"
+#include "net/auth.h"
+#include "net/http_response.h"
 #include "net/metrics.h"
+#include "net/openapi.h"
 #include "net/static_files.h"
 #include "net/websocket_session.h"
 
 namespace geodesic::net {
 namespace {
 
-using Request = http::request<http::string_body>;
-using Response = http::response<http::string_body>;
-
-Response make_response(const Request& request, http::status status, std::string_view mime,
-                       std::string body) {
-  Response response(status, request.version());
-  response.set(http::field::server, "geodesic");
-  response.set(http::field::content_type, beast::string_view(mime.data(), mime.size()));
-  response.keep_alive(request.keep_alive());
-  response.body() = std::move(body);
-  response.prepare_payload();
+Response unauthorized(const Request& request) {
+  Response response = json_error(request, http::status::unauthorized,
+                                 "token: missing or wrong bearer token");
+  response.set(http::field::www_authenticate, "Bearer");
   return response;
-}
-
-Response json_response(const Request& request, const nlohmann::ordered_json& body) {
-  return make_response(request, http::status::ok, "application/json", body.dump());
 }
 
 Response error_response(const Request& request, http::status status, std::string_view text) {
@@ -41,13 +34,17 @@ std::string_view path_of(const Request& request) {
 }
 
 Response answer(const Request& request, ServerContext& context) {
+  const std::string_view path = path_of(request);
+  if (needs_token(path) && !authorized(request, context.options.token))
+    return unauthorized(request);
+  if (context.jobs)
+    if (auto response = jobs::answer_jobs(request, path, *context.jobs)) return std::move(*response);
   if (request.method() != http::verb::get && request.method() != http::verb::head) {
     Response response = error_response(request, http::status::method_not_allowed,
                                        "only GET and HEAD");
     response.set(http::field::allow, "GET, HEAD");
     return response;
   }
-  const std::string_view path = path_of(request);
   if (path == "/healthz") {
     const ServiceStats stats = context.render.stats();
     return json_response(request,
@@ -56,6 +53,9 @@ Response answer(const Request& request, ServerContext& context) {
   if (path == "/metrics")
     return make_response(request, http::status::ok, "text/plain; version=0.0.4; charset=utf-8",
                          prometheus_metrics(context.render.stats(), context.counters));
+  if (path == "/api/openapi.json")
+    return make_response(request, http::status::ok, "application/json",
+                         std::string(openapi_document()));
   if (path == "/api/scenes")
     return json_response(request, {{"scenes", context.render.bundled_scenes()}});
   auto file = load_static_file(context.options.web_dir, path);
@@ -87,7 +87,8 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
   if (ec == http::error::body_limit) {
     Request head;  // answer as HTTP/1.1, then close
     head.keep_alive(false);
-    return send(error_response(head, http::status::payload_too_large, "body too large"));
+    return send(json_error(head, http::status::payload_too_large,
+                           "body: larger than " + std::to_string(kMaxMessageBytes) + " bytes"));
   }
   if (ec) return;  // timed out, reset, or not HTTP: just drop the connection
 
@@ -95,6 +96,7 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
   if (websocket::is_upgrade(request)) {
     if (path_of(request) != "/ws")
       return send(error_response(request, http::status::not_found, "WebSocket only at /ws"));
+    if (!authorized(request, context_.options.token)) return send(unauthorized(request));
     std::make_shared<WebSocketSession>(stream_.release_socket(), context_)
         ->start(std::move(request));
     return;

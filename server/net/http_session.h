@@ -1,6 +1,7 @@
-// One HTTP connection: keep-alive requests for static files, /healthz, /metrics and
-// /api/scenes, or the upgrade to a WebSocket at /ws. Each request must arrive whole within the
-// HTTP timeout and its body stay within kMaxMessageBytes.
+// One HTTP connection: keep-alive requests for static files, /healthz, /metrics, /api/scenes,
+// /api/openapi.json and the jobs API (/api/jobs...), or the upgrade to a WebSocket at /ws; the
+// token check (net/auth.h) comes first. Each request must arrive whole within the HTTP timeout
+// and its body stay within kMaxMessageBytes.
 #pragma once
 
 #include <memory>

@@ -13,8 +13,8 @@ constexpr auto kShutdownGrace = std::chrono::seconds(2);
 
 }  // namespace
 
-Server::Server(RenderService& render, ServerOptions options)
-    : context_{render, std::move(options), {}, {}}, io_(context_.options.threads) {
+Server::Server(RenderService& render, ServerOptions options, jobs::JobQueue* jobs)
+    : context_{render, std::move(options), {}, {}, jobs}, io_(context_.options.threads) {
   const tcp::endpoint endpoint(asio::ip::make_address(context_.options.host),
                                context_.options.port);
   listener_ = std::make_shared<Listener>(io_, context_, endpoint);

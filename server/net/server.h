@@ -18,9 +18,10 @@ class Listener;
 
 class Server {
  public:
-  // Binds (port 0: an ephemeral port) and starts serving. `render` must outlive the server.
-  // Throws boost::system::system_error when the address cannot be bound.
-  Server(RenderService& render, ServerOptions options);
+  // Binds (port 0: an ephemeral port) and starts serving. `render` and `jobs` (if any: the
+  // jobs API) must outlive the server. Throws boost::system::system_error when the address
+  // cannot be bound.
+  Server(RenderService& render, ServerOptions options, jobs::JobQueue* jobs = nullptr);
   ~Server();  // stop()
   Server(const Server&) = delete;
   Server& operator=(const Server&) = delete;

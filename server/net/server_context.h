@@ -15,6 +15,10 @@
 
 #include "render/render_service.h"
 
+namespace geodesic::jobs {
+class JobQueue;
+}
+
 namespace geodesic::net {
 
 // Largest WebSocket message and HTTP request body accepted.
@@ -32,6 +36,8 @@ struct ServerOptions {
   // net.ipv4.tcp_wmem's maximum, 4 MiB by default), which hides a slow reader for a while.
   int socket_send_buffer = 0;
   int threads = 2;
+  // Bearer token the API, /metrics and /ws need (net/auth.h); empty: no auth.
+  std::string token;
 };
 
 struct NetCounters {
@@ -69,6 +75,7 @@ struct ServerContext {
   ServerOptions options;
   NetCounters counters;
   SessionRegistry sessions;
+  jobs::JobQueue* jobs = nullptr;  // null: no jobs API (404)
 };
 
 }  // namespace geodesic::net

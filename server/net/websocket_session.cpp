@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "net/protocol.h"
+#include "scene/default_scene.h"
 #include "scene/scene.h"
 
 namespace geodesic::net {
@@ -137,8 +138,11 @@ void WebSocketSession::handle_message(const std::string& text) {
   const OpenRequest* open = std::get_if<OpenRequest>(&message);
   try {
     if (open) {
-      send_text(scene_message(open->scene ? render.load_scene(*id_, *open->scene)
-                                          : render.load_scene_document(*id_, *open->document)));
+      send_text(scene_message(
+          open->scene        ? render.load_scene(*id_, *open->scene)
+          : open->generators ? render.load_scene_document(
+                                   *id_, generator_text_scene(*open->generators, "generators"))
+                             : render.load_scene_document(*id_, *open->document)));
     } else if (const auto* motion = std::get_if<CameraMotion>(&message)) {
       render.move_camera(*id_, *motion);
     } else {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <chrono>
 #include <condition_variable>
+#include <deque>
 #include <filesystem>
 #include <map>
 #include <mutex>
@@ -21,7 +22,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // Each session gets a slice this long before the next one's turn; a frame follows each slice.
-constexpr double kSliceSeconds = 0.04;
+constexpr double kSliceSeconds = RenderService::kSliceSeconds;
 // After a move, frames are rendered at reduced resolution until the camera has been still this
 // long (fast feedback while walking, full quality when still), as Cycles' viewport does: the
 // divisor is chosen from the measured cost so that one sample of the frame takes about
@@ -62,6 +63,11 @@ struct RenderService::Impl {
   // a move, a new scene or /metrics waits at most one slice.
   mutable std::atomic<int> waiting{0};
   std::condition_variable wake;
+  // Background callers (run_background) wait in arrival order for a turn; `granted` is the
+  // ticket holding the device, 0 when the render thread has it.
+  std::condition_variable background_turn;
+  std::deque<uint64_t> background_queue;
+  uint64_t next_ticket = 1, granted = 0;
   std::map<SessionId, std::unique_ptr<Session>> sessions;
   SessionId next_id = 1;
   SessionId last_served = 0;
@@ -83,6 +89,7 @@ struct RenderService::Impl {
       stopping = true;
     }
     wake.notify_all();
+    background_turn.notify_all();
     thread.join();
   }
 
@@ -149,20 +156,37 @@ struct RenderService::Impl {
     std::unique_lock lock(mutex);
     while (!stopping) {
       auto it = sessions.upper_bound(last_served);
-      if (it == sessions.end()) it = sessions.begin();
       if (it == sessions.end()) {
-        wake.wait_for(lock, std::chrono::milliseconds(50));
-        continue;
+        // Between rounds: a background turn, or a pause when there is nothing to do.
+        const bool handed_over = hand_over_background(lock);
+        it = sessions.begin();
+        if (it == sessions.end() && !handed_over)
+          wake.wait_for(lock, std::chrono::milliseconds(50));
       }
-      last_served = it->first;
-      stats.queue_depth = int(sessions.size()) - 1;
-      serve(*it->second);
+      if (it != sessions.end()) {
+        last_served = it->first;
+        stats.queue_depth = int(sessions.size()) - 1;
+        serve(*it->second);
+      }
       // Let waiting callers (moves, new scenes, stats) in between slices.
       lock.unlock();
       for (int spins = 0; waiting.load() > 0 && spins < 100; ++spins)
         std::this_thread::sleep_for(std::chrono::microseconds(100));
       lock.lock();
     }
+  }
+
+  // Gives the device to the first background caller for one turn unless a session is moving;
+  // true when one had it.
+  bool hand_over_background(std::unique_lock<std::mutex>& lock) {
+    if (background_queue.empty()) return false;
+    for (const auto& [id, s] : sessions)
+      if (s->moving) return false;
+    granted = background_queue.front();
+    background_queue.pop_front();
+    background_turn.notify_all();
+    background_turn.wait(lock, [this] { return granted == 0; });
+    return true;
   }
 
   // One slice: a band of rows of the current pass (the whole image when it fits in a slice);
@@ -249,17 +273,25 @@ void RenderService::close_session(SessionId id) {
   impl_->stats.sessions = int(impl_->sessions.size());
 }
 
-SceneInfo RenderService::load_scene(SessionId id, const std::string& name) {
+Scene RenderService::load_bundled_scene(const std::string& name) const {
   const auto names = bundled_scenes();
   if (std::find(names.begin(), names.end(), name) == names.end())
     throw SceneError("scene: unknown bundled scene \"" + name + "\"");
-  Scene scene = load_scene_file(std::filesystem::path(impl_->scene_dir) / (name + ".json"));
+  return load_scene_file(std::filesystem::path(impl_->scene_dir) / (name + ".json"));
+}
+
+Scene RenderService::parse_scene_document(const nlohmann::ordered_json& document) const {
+  return parse_scene(document, impl_->scene_dir);
+}
+
+SceneInfo RenderService::load_scene(SessionId id, const std::string& name) {
+  Scene scene = load_bundled_scene(name);
   auto lock = impl_->lock();
   return impl_->install(impl_->find(id), std::move(scene), name);
 }
 
 SceneInfo RenderService::load_scene_document(SessionId id, const nlohmann::ordered_json& doc) {
-  Scene scene = parse_scene(doc, impl_->scene_dir);
+  Scene scene = parse_scene_document(doc);
   std::string name = scene.name.empty() ? "document" : scene.name;
   auto lock = impl_->lock();
   return impl_->install(impl_->find(id), std::move(scene), std::move(name));
@@ -302,6 +334,29 @@ SceneInfo RenderService::apply_settings(SessionId id, const SessionSettings& set
   }
   impl_->restart(s, false);
   return Impl::info(s);
+}
+
+bool RenderService::run_background(const std::function<void(VulkanContext&)>& work) {
+  Impl& impl = *impl_;
+  std::unique_lock lock(impl.mutex);  // not impl.lock(): that one has priority
+  if (impl.stopping) return false;
+  const uint64_t ticket = impl.next_ticket++;
+  impl.background_queue.push_back(ticket);
+  impl.wake.notify_all();
+  impl.background_turn.wait(lock, [&] { return impl.granted == ticket || impl.stopping; });
+  if (impl.granted != ticket) {
+    std::erase(impl.background_queue, ticket);
+    return false;
+  }
+  struct GiveBack {  // the device goes back to the render thread, even when `work` throws
+    Impl& impl;
+    ~GiveBack() {
+      impl.granted = 0;
+      impl.background_turn.notify_all();
+    }
+  } give_back{impl};
+  work(impl.ctx);
+  return true;
 }
 
 ServiceStats RenderService::stats() const {

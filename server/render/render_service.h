@@ -14,8 +14,11 @@
 
 #include "geometry/vec.h"
 #include "scene/camera_motion.h"
+#include "scene/scene.h"
 
 namespace geodesic {
+
+class VulkanContext;
 
 struct FrameInfo {
   uint64_t frame = 0;     // per session, increasing
@@ -78,6 +81,11 @@ class RenderService {
   SessionId open_session(FrameCallback on_frame);
   void close_session(SessionId id);
 
+  // A bundled scene by name, or an inline scene document (mesh paths relative to the scene
+  // directory), as `open` resolves them; throws SceneError ("<field>: <reason>").
+  Scene load_bundled_scene(const std::string& name) const;
+  Scene parse_scene_document(const nlohmann::ordered_json& document) const;
+
   // Each throws geodesic::SceneError / std::invalid_argument ("<field>: <reason>") on bad
   // input, leaving the session as it was.
   SceneInfo load_scene(SessionId id, const std::string& bundled_name);
@@ -86,6 +94,15 @@ class RenderService {
   SceneInfo apply_settings(SessionId id, const SessionSettings& settings);
 
   ServiceStats stats() const;
+
+  // Low-priority work (render jobs): waits until the render thread hands over the device, then
+  // runs `work(device)` on the calling thread with the device to itself. A hand-over happens
+  // once per round of the sessions, and never while a session is moving, so walking keeps its
+  // frame rate; with no session open, background callers take turns back to back. `work`
+  // should take about one slice (kSliceSeconds). Returns false, without running `work`, once
+  // the service is stopping.
+  static constexpr double kSliceSeconds = 0.04;
+  bool run_background(const std::function<void(VulkanContext&)>& work);
 
  private:
   struct Impl;

@@ -1,14 +1,11 @@
 #include "render/renderer.h"
 
-#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "render/relative_error.h"
 
 namespace geodesic {
-namespace {
-
-double luminance(const float* rgb) { return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2]; }
-
-}  // namespace
-
 Renderer::Renderer(VulkanContext& ctx, const Scene& scene, BackendKind backend)
     : ctx_(ctx),
       geometry_(scene.geometry),
@@ -45,6 +42,18 @@ void Renderer::set_max_depth(int max_depth) {
   samples_ = 0;
 }
 
+std::span<const float> Renderer::accumulation() const {
+  return {resources_.accumulation(), size_t(2) * width() * height() * 4};
+}
+
+void Renderer::restore(uint32_t samples, std::span<const float> sums) {
+  if (sums.size() != accumulation().size())
+    throw std::invalid_argument("checkpoint: " + std::to_string(sums.size()) +
+                                " floats for a view of " + std::to_string(accumulation().size()));
+  resources_.load_accumulation(sums.data());
+  samples_ = samples;
+}
+
 Image Renderer::image() const {
   Image image;
   image.width = width();
@@ -64,17 +73,7 @@ Image Renderer::image() const {
 double Renderer::estimated_error() const {
   const size_t pixels = size_t(width()) * height();
   const float* even = resources_.accumulation();
-  const float* odd = even + pixels * 4;
-  double difference = 0, signal = 0;
-  for (size_t p = 0; p < pixels; ++p) {
-    const float n_even = even[p * 4 + 3], n_odd = odd[p * 4 + 3];
-    if (n_even == 0 || n_odd == 0) return -1;
-    const double a = luminance(even + p * 4) / n_even, b = luminance(odd + p * 4) / n_odd;
-    const double c = (luminance(even + p * 4) + luminance(odd + p * 4)) / (n_even + n_odd);
-    difference += (a - b) * (a - b) / 4;
-    signal += c * c;
-  }
-  return signal > 0 ? std::sqrt(difference / signal) : -1;
+  return estimated_relative_rmse(even, even + pixels * 4, pixels);
 }
 
 }  // namespace geodesic

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "render/cells.h"
@@ -36,9 +37,18 @@ class Renderer {
   int width() const { return int(resources_.width()); }
   int height() const { return int(resources_.height()); }
 
+  // The accumulation of the current view (2 halves x width x height x rgba sums), and the
+  // sample count it holds: a checkpoint, valid between passes (after finish_pass).
+  std::span<const float> accumulation() const;
+  // Puts a checkpoint of the same view back. Sample indices go on from `samples`, so the
+  // samples added afterwards have their own random streams (independent of those already in
+  // the sums): the result stays an unbiased estimate. Throws std::invalid_argument on a size
+  // mismatch.
+  void restore(uint32_t samples, std::span<const float> sums);
+
   Image image() const;
   // Relative RMS error of image(), from the difference of the even and odd halves
-  // (docs/protocol.md); negative until both halves have a sample.
+  // (estimated_relative_rmse, docs/numerics.md); negative until both halves have a sample.
   double estimated_error() const;
 
   const char* backend_name() const { return backend_->name(); }

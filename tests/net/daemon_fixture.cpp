@@ -155,17 +155,20 @@ void WsClient::close() {
 }
 
 http::response<http::string_body> http_request(uint16_t port, http::verb method,
-                                               const std::string& target, std::string body) {
+                                               const std::string& target, std::string body,
+                                               const HttpHeaders& headers) {
   asio::io_context io;
   beast::tcp_stream stream(io);
   stream.expires_after(10s);
   http::request<http::string_body> request(method, target, 11);
   request.set(http::field::host, "127.0.0.1");
+  for (const auto& [field, value] : headers) request.set(field, value);
   if (!body.empty()) {
     request.body() = std::move(body);
     request.prepare_payload();
   }
   http::response_parser<http::string_body> parser;
+  parser.body_limit(64 << 20);  // job results (EXR) are larger than Beast's default 8 MiB
   parser.skip(method == http::verb::head);  // a HEAD answer has a length but no body
   beast::flat_buffer buffer;
   beast::error_code result;

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -90,9 +92,11 @@ class WsClient {
   bool expect_jpeg_ = false;
 };
 
+using HttpHeaders = std::vector<std::pair<http::field, std::string>>;
 http::response<http::string_body> http_request(uint16_t port, http::verb method,
                                                const std::string& target,
-                                               std::string body = "");
+                                               std::string body = "",
+                                               const HttpHeaders& headers = {});
 inline http::response<http::string_body> http_get(uint16_t port, const std::string& target) {
   return http_request(port, http::verb::get, target);
 }

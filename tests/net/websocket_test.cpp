@@ -3,7 +3,9 @@
 // few seconds on lavapipe.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <functional>
+#include <sstream>
 #include <thread>
 
 #include "daemon_fixture.h"
@@ -129,6 +131,29 @@ TEST(WebSocket, UnknownSceneIsAnErrorNamingScene) {
   if (scene["name"] == "cornell-box") next = client.read_until("scene");  // the default's first
   EXPECT_EQ(next["name"], "spherical-spheres");
   EXPECT_EQ(next["geometry"], "spherical");
+}
+
+// A dropped .gen file: its text opens the default scene inside that space; bad text is an
+// error naming the generators field, the matrix and the line.
+TEST(WebSocket, GeneratorTextOpensTheSpaceItDescribes) {
+  Daemon daemon;
+  WsClient client(daemon.port());
+  std::ifstream in(std::string(GEODESIC_SOURCE_DIR) + "/catalogue/lens-7-2.gen");
+  std::ostringstream text;
+  text << in.rdbuf();
+  client.send({{"type", "open"}, {"generators", text.str()}});
+  json scene = client.read_until("scene");
+  if (scene["name"] == "cornell-box") scene = client.read_until("scene");  // the default's first
+  EXPECT_EQ(scene["name"], "generators");
+  EXPECT_EQ(scene["geometry"], "spherical");
+  EXPECT_EQ(scene["manifold"], "generators");
+
+  client.send({{"type", "open"}, {"generators", "1 0 0 0\n0 1 0\n0 0 1 0\n0 0 0 1\n"}});
+  const json error = client.read_until("error");
+  EXPECT_EQ(error["field"], "generators");
+  EXPECT_NE(error["message"].get<std::string>().find("matrix 1 (line 2): row 2 has 3 entries"),
+            std::string::npos)
+      << error["message"];
 }
 
 TEST(WebSocket, OversizedMessageClosesWith1009) {

@@ -24,10 +24,12 @@ command -v node >/dev/null || fail "node is missing: run scripts/install-deps.sh
 port=$(node -e 'const s = require("net").createServer().listen(0, "127.0.0.1", () => { console.log(s.address().port); s.close(); });')
 url="http://127.0.0.1:$port"
 log="$build/web-test-daemon.log"
+data="$build/web-test-data"  # render jobs: a fresh data directory each run
+rm -rf "$data"
 
 # From the repository root, so the daemon finds web/ and scenes/.
 cd "$repo"
-"$geodesic" serve --host 127.0.0.1 --port "$port" >"$log" 2>&1 &
+"$geodesic" serve --host 127.0.0.1 --port "$port" --data "$data" >"$log" 2>&1 &
 daemon=$!
 stop_daemon() {
   if kill -0 "$daemon" 2>/dev/null; then

@@ -1,7 +1,8 @@
 // A walk through the web client in real headless Chromium (Debian's /usr/bin/chromium, driven
 // by playwright-core) against a running `geodesic serve`: the page connects, frames appear and
-// refine, W moves the camera, the picker switches scenes, a bad scene shows its error, render
-// jobs answer, and a dead server shows the "unreachable" banner.
+// refine, W moves the camera, the picker switches scenes, a bad scene shows its error, a render
+// job runs to its files and another is cancelled, and a dead server shows the "unreachable"
+// banner.
 //
 // Run through tests/web/run.sh, which starts the daemon and sets:
 //   GEODESIC_URL    the daemon's http://host:port (required)
@@ -294,7 +295,9 @@ test('the scene picker switches scenes and the image changes', async () => {
   await page.screenshot({ path: path.join(SCREENSHOT_DIR, 'walkthrough.png') });
 });
 
-test('the render job button answers', async () => {
+// Submits the current view as a render job from the panel; its id.
+async function submitJob(spp) {
+  await page.fill('#job-spp', String(spp));
   await page.click('#render-job');
   await page.waitForFunction(
     () => !['', 'submitting…'].includes(document.getElementById('job-status').textContent),
@@ -302,7 +305,59 @@ test('the render job button answers', async () => {
     { timeout: 10_000 },
   );
   const text = await page.textContent('#job-status');
-  assert.match(text, /render jobs not available on this server|queued/);
+  const match = /^render job (\d+) queued$/.exec(text);
+  assert.ok(match, `the job was not queued: "${text}"`);
+  return match[1];
+}
+
+test('a render job runs to its files, another is cancelled', async () => {
+  // Two samples: the scene the walk switched to (a quotient manifold) is slow on lavapipe, and
+  // the job shares the device with the session.
+  const done = await submitJob(2);
+  // The list shows it with its progress, then links its results.
+  const item = `#job-list li[data-id="${done}"]`;
+  await page.waitForSelector(`${item}[data-state="done"] a:text("png")`, { timeout: 120_000 });
+  assert.match(await page.textContent(`${item} .job-state`), /^done · 2 spp/);
+  const href = await page.getAttribute(`${item} a:text("png")`, 'href');
+  const png = await page.request.get(`${BASE}${href}`);
+  assert.equal(png.status(), 200);
+  assert.equal(png.headers()['content-type'], 'image/png');
+  const bytes = await png.body();
+  assert.deepEqual([...bytes.subarray(1, 4)], [0x50, 0x4e, 0x47], 'not a PNG');
+  assert.equal(bytes.readUInt32BE(16), 160, 'PNG width'); // IHDR: the view's resolution
+  assert.equal(bytes.readUInt32BE(20), 120, 'PNG height');
+
+  const long = await submitJob(1_000_000);
+  const running = `#job-list li[data-id="${long}"]`;
+  await page.waitForSelector(`${running}[data-state="running"] .job-cancel`, { timeout: 120_000 });
+  await page.screenshot({ path: path.join(SCREENSHOT_DIR, 'walkthrough-jobs.png') });
+  await page.click(`${running} .job-cancel`);
+  await page.waitForSelector(`${running}[data-state="cancelled"]`, { timeout: 30_000 });
+  assert.equal(await page.$(`${running} .job-cancel`), null, 'a cancelled job keeps its cancel button');
+});
+
+test('a .gen file picked on the page opens its space, and W walks through it', async () => {
+  const gen = path.resolve(here, '../../catalogue/lens-7-2.gen');
+  await page.setInputFiles('#generator-file', gen);
+  await waitFor(() => sentOfType('open').some((m) => typeof m.generators === 'string' &&
+                                                     m.generators.includes('L(7,2)')), 'open {generators}');
+  await waitForShownFrame(page, 2, (f) => f.scene === 'generators');
+  const scene = receivedOfType('scene').at(-1);
+  assert.equal(scene.name, 'generators');
+  assert.equal(scene.geometry, 'spherical');
+  assert.match(await page.textContent('#scene-title'), /generators/);
+
+  const before = await canvasBlocks(page);
+  const movesBefore = sentOfType('move').length;
+  await page.focus('#view');
+  await page.keyboard.down('w');
+  await page.waitForTimeout(400);
+  await page.keyboard.up('w');
+  await waitFor(() => sentOfType('move').length > movesBefore, 'a move inside the lens space');
+  const after = await waitForShownFrame(page, 2, (f) => f.scene === 'generators');
+  const changed = meanAbsDiff(before, await canvasBlocks(page));
+  console.log(`# lens space walk: block diff ${changed.toFixed(2)}, frame ${after.frame}`);
+  assert.ok(changed > 1, `walking did not change the view: ${changed}`);
 });
 
 test('a bad scene shows its error and the session goes on', async () => {

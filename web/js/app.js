@@ -3,12 +3,14 @@
 // page keeps only what the user asked for (`wanted`), so it can ask again when a reconnect
 // starts a fresh session.
 //
-// URL parameters set the starting point, e.g. ?scene=torus-cornell&width=320&height=240&depth=3.
+// URL parameters set the starting point, e.g. ?scene=torus-cornell&width=320&height=240&depth=3,
+// and ?token=... is the daemon's token when it has one (for the WebSocket and the jobs API).
 
 import { Connection, defaultSocketUrl } from './connection.js';
 import { Viewer } from './viewer.js';
 import { Controls } from './controls.js';
 import { Stats } from './stats.js';
+import { JobsPanel } from './jobs.js';
 
 const $ = (id) => document.getElementById(id);
 const clamp = (v, lo, hi) => Math.min(hi, Math.max(lo, v));
@@ -19,12 +21,15 @@ const ui = {
   canvas: $('view'),
   errors: $('errors'),
   picker: $('scene-picker'),
+  generatorFile: $('generator-file'),
   width: $('width'),
   height: $('height'),
   depth: $('depth'),
   speed: $('speed'),
   jobButton: $('render-job'),
   jobStatus: $('job-status'),
+  jobList: $('job-list'),
+  jobSpp: $('job-spp'),
 };
 
 const MAX_ERRORS_SHOWN = 3;
@@ -37,6 +42,7 @@ const intParam = (name) => {
 };
 const wanted = {
   scene: params.get('scene'),
+  generators: null, // the text of a dropped .gen file, while its space is what we want
   width: intParam('width'),
   height: intParam('height'),
   max_depth: intParam('depth'),
@@ -46,6 +52,7 @@ const limits = { max_width: 1920, max_height: 1080, max_depth: 16 };
 let currentScene = null; // the last `scene` message
 let lastFrame = null;    // the last `frame` message (its camera goes into render jobs)
 let openPending = false; // an `open` sent and not yet answered by `scene` or `error`
+let openGenerators = null; // the generator text of the scene rendering now, if it came from one
 let sceneJustChanged = false; // a `scene` message came and no frame since
 
 const viewer = new Viewer(ui.canvas);
@@ -60,7 +67,10 @@ const stats = new Stats(
   $('error-plot'),
 );
 
-const connection = new Connection(defaultSocketUrl(location), {
+// Browsers cannot set headers on a WebSocket: the token goes as a query parameter.
+const token = params.get('token');
+const socketUrl = defaultSocketUrl(location) + (token ? `?token=${encodeURIComponent(token)}` : '');
+const connection = new Connection(socketUrl, {
   onStatus: showStatus,
   onMessage: handleMessage,
   onFrame: handleFrame,
@@ -134,6 +144,7 @@ function handleMessage(msg) {
         // reconnect would ask again) and put the picker back to match.
         openPending = false;
         wanted.scene = currentScene ? currentScene.name : null;
+        wanted.generators = openGenerators;
         if (currentScene) {
           selectScene(currentScene.name);
           applyWantedSettings(currentScene); // skipped while the open was pending
@@ -160,18 +171,29 @@ function onHello(msg) {
   lastFrame = null;
 
   // The new session starts on the default scene: ask again for what the user had chosen.
-  if (wanted.scene) openScene(wanted.scene);
+  if (wanted.generators) openSpace(wanted.generators);
+  else if (wanted.scene) openScene(wanted.scene);
 }
 
 function openScene(name) {
   wanted.scene = name;
+  wanted.generators = null;
   openPending = connection.send({ type: 'open', scene: name });
+}
+
+// A space given by generators: the server builds its Dirichlet domain and a default scene in
+// it, named `generators`.
+function openSpace(text) {
+  wanted.scene = 'generators';
+  wanted.generators = text;
+  openPending = connection.send({ type: 'open', generators: text });
 }
 
 function onScene(msg) {
   currentScene = msg;
   sceneJustChanged = true;
   if (msg.name === wanted.scene) openPending = false;
+  openGenerators = msg.name === 'generators' ? wanted.generators : null;
   stats.reset();
   clearErrors();
   selectScene(msg.name);
@@ -250,6 +272,19 @@ function clearErrors() {
 
 // ---- panel --------------------------------------------------------------------------------
 
+// A .gen file picked or dropped on the view opens its space.
+function openGeneratorFile(file) {
+  if (!file) return;
+  file.text().then(openSpace, (e) => showError('generators', `${file.name}: ${e.message}`));
+  ui.canvas.focus();
+}
+ui.generatorFile.addEventListener('change', () => openGeneratorFile(ui.generatorFile.files[0]));
+ui.canvas.addEventListener('dragover', (e) => e.preventDefault());
+ui.canvas.addEventListener('drop', (e) => {
+  e.preventDefault();
+  openGeneratorFile(e.dataTransfer.files[0]);
+});
+
 ui.picker.addEventListener('change', () => {
   openScene(ui.picker.value);
   // Hand the keyboard back to the view, so WASD moves the camera rather than the picker.
@@ -275,43 +310,23 @@ ui.width.addEventListener('change', () => sendSettings('width', readInt(ui.width
 ui.height.addEventListener('change', () => sendSettings('height', readInt(ui.height, 16, limits.max_height)));
 ui.depth.addEventListener('change', () => sendSettings('max_depth', readInt(ui.depth, 0, limits.max_depth)));
 
-// Render jobs (POST /api/jobs) render the current view offline at full quality. Servers without
-// the jobs API answer 404 (or 405 for a path that only serves files).
-ui.jobButton.addEventListener('click', async () => {
-  const job = {
+// Render jobs render the current view offline at full quality (web/js/jobs.js).
+const jobs = new JobsPanel(
+  { button: ui.jobButton, status: ui.jobStatus, list: ui.jobList, spp: ui.jobSpp },
+  token,
+);
+ui.jobButton.addEventListener('click', () =>
+  jobs.submit({
     scene: currentScene?.name ?? wanted.scene ?? null, // what is rendering now
     camera: lastFrame?.camera ?? null,
     width: Number.parseInt(ui.width.value, 10),
     height: Number.parseInt(ui.height.value, 10),
     max_depth: Number.parseInt(ui.depth.value, 10),
-  };
-  ui.jobStatus.classList.remove('bad');
-  ui.jobStatus.textContent = 'submitting…';
-  try {
-    const response = await fetch('/api/jobs', {
-      method: 'POST',
-      headers: { 'Content-Type': 'application/json' },
-      body: JSON.stringify(job),
-    });
-    if ([404, 405, 501].includes(response.status)) {
-      ui.jobStatus.classList.add('bad');
-      ui.jobStatus.textContent = 'render jobs not available on this server';
-      return;
-    }
-    const body = await response.json().catch(() => ({}));
-    if (!response.ok) {
-      ui.jobStatus.classList.add('bad');
-      ui.jobStatus.textContent = `render job refused: ${body.message || response.statusText || response.status}`;
-      return;
-    }
-    ui.jobStatus.textContent = body.id !== undefined ? `render job ${body.id} queued` : 'render job queued';
-  } catch {
-    ui.jobStatus.classList.add('bad');
-    ui.jobStatus.textContent = 'render job not sent: server unreachable';
-  }
-});
+  }),
+);
+jobs.start();
 
 // For debugging from the console.
-window.geodesic = { connection, viewer, stats, controls, wanted };
+window.geodesic = { connection, viewer, stats, controls, wanted, jobs };
 
 connection.connect();

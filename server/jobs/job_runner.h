@@ -1,0 +1,51 @@
+// Renders one job to its stop condition on a thread of its own, taking the device only in the
+// turns RenderService::run_background hands out (interactive sessions first). At the end of a
+// pass, at most every checkpoint_seconds, it checkpoints the accumulation (checkpoint.h) and
+// saves its progress in the store; a resumed job starts from that checkpoint with the sample
+// count, and so the random streams, going on. When done it writes the results atomically.
+#pragma once
+
+#include <atomic>
+#include <filesystem>
+#include <mutex>
+#include <thread>
+
+#include "jobs/job_store.h"
+#include "render/render_service.h"
+
+namespace geodesic::jobs {
+
+class JobRunner {
+ public:
+  // `job` is queued, or running when the daemon stopped: its folder `dir` may hold a checkpoint.
+  JobRunner(RenderService& service, JobStore& store, JobRecord job, std::filesystem::path dir,
+            double checkpoint_seconds);
+  ~JobRunner();  // leaves the job as it is in the store (a shutdown: it resumes next start)
+  JobRunner(const JobRunner&) = delete;
+  JobRunner& operator=(const JobRunner&) = delete;
+
+  // Marks the job cancelled in the store at once (a DELETE never waits for a device turn);
+  // the runner frees the device and deletes the checkpoint at its next turn. False when the
+  // job had already ended.
+  bool cancel();
+  JobRecord status() const;  // live: progress since the last save too
+  bool finished() const { return finished_; }
+
+ private:
+  void run();
+  void render();
+  // Persists `state` (and the progress so far), unless the job was cancelled meanwhile: then it
+  // stays cancelled. A finished job's checkpoint goes.
+  void save(JobState state, const std::string& message = "");
+
+  RenderService& service_;
+  JobStore& store_;
+  const std::filesystem::path dir_;
+  const double checkpoint_seconds_;
+  mutable std::mutex mutex_;  // guards job_
+  JobRecord job_;
+  std::atomic<bool> cancel_{false}, stop_{false}, finished_{false};
+  std::thread thread_;
+};
+
+}  // namespace geodesic::jobs

@@ -1,0 +1,177 @@
+#include "jobs/job_store.h"
+
+#include <ctime>
+#include <stdexcept>
+#include <string>
+
+#include <sqlite3.h>
+
+namespace geodesic::jobs {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+constexpr const char* kSchema = R"sql(
+CREATE TABLE IF NOT EXISTS jobs (
+  id INTEGER PRIMARY KEY AUTOINCREMENT,  -- never reused, even after a delete
+  state TEXT NOT NULL,
+  request TEXT NOT NULL,                 -- JobRequest::to_json()
+  created TEXT NOT NULL,
+  samples INTEGER NOT NULL DEFAULT 0,
+  elapsed REAL NOT NULL DEFAULT 0,
+  error REAL NOT NULL DEFAULT -1,
+  progress REAL NOT NULL DEFAULT 0,
+  checkpoint_samples INTEGER NOT NULL DEFAULT 0,
+  message TEXT NOT NULL DEFAULT '',
+  series TEXT NOT NULL DEFAULT '[]'
+);
+)sql";
+
+constexpr const char* kColumns =
+    "id, state, request, created, samples, elapsed, error, progress, checkpoint_samples, "
+    "message, series";
+
+// One prepared statement, finalized on every path.
+class Statement {
+ public:
+  Statement(sqlite3* db, const std::string& sql) : db_(db) {
+    if (sqlite3_prepare_v2(db, sql.c_str(), -1, &stmt_, nullptr) != SQLITE_OK)
+      throw std::runtime_error(std::string("job store: ") + sqlite3_errmsg(db));
+  }
+  ~Statement() { sqlite3_finalize(stmt_); }
+  Statement(const Statement&) = delete;
+  Statement& operator=(const Statement&) = delete;
+
+  Statement& bind(int i, const std::string& text) {
+    sqlite3_bind_text(stmt_, i, text.c_str(), int(text.size()), SQLITE_TRANSIENT);
+    return *this;
+  }
+  Statement& bind(int i, int64_t v) {
+    sqlite3_bind_int64(stmt_, i, v);
+    return *this;
+  }
+  Statement& bind(int i, double v) {
+    sqlite3_bind_double(stmt_, i, v);
+    return *this;
+  }
+  // True while there is a row to read.
+  bool step() {
+    const int rc = sqlite3_step(stmt_);
+    if (rc == SQLITE_ROW) return true;
+    if (rc == SQLITE_DONE) return false;
+    throw std::runtime_error(std::string("job store: ") + sqlite3_errmsg(db_));
+  }
+  int64_t integer(int i) const { return sqlite3_column_int64(stmt_, i); }
+  double real(int i) const { return sqlite3_column_double(stmt_, i); }
+  std::string text(int i) const {
+    const auto* p = sqlite3_column_text(stmt_, i);
+    return p ? std::string(reinterpret_cast<const char*>(p)) : std::string();
+  }
+
+ private:
+  sqlite3* db_;
+  sqlite3_stmt* stmt_ = nullptr;
+};
+
+void exec(sqlite3* db, const char* sql) {
+  char* error = nullptr;
+  if (sqlite3_exec(db, sql, nullptr, nullptr, &error) != SQLITE_OK) {
+    const std::string message = error ? error : "unknown error";
+    sqlite3_free(error);
+    throw std::runtime_error("job store: " + message);
+  }
+}
+
+std::string now_iso8601() {
+  const std::time_t now = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&now, &utc);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return text;
+}
+
+JobRecord read_row(const Statement& row) {
+  JobRecord job;
+  job.id = row.integer(0);
+  job.state = parse_state(row.text(1));
+  job.request = Json::parse(row.text(2));
+  job.created = row.text(3);
+  job.samples = uint32_t(row.integer(4));
+  job.elapsed = row.real(5);
+  job.error = row.real(6);
+  job.progress = row.real(7);
+  job.checkpoint_samples = uint32_t(row.integer(8));
+  job.message = row.text(9);
+  job.series = series_from_json(Json::parse(row.text(10)));
+  return job;
+}
+
+}  // namespace
+
+JobStore::JobStore(const std::filesystem::path& file) {
+  if (sqlite3_open_v2(file.c_str(), &db_, SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE, nullptr) !=
+      SQLITE_OK) {
+    const std::string message = db_ ? sqlite3_errmsg(db_) : "out of memory";
+    sqlite3_close(db_);
+    throw std::runtime_error("job store: " + file.string() + ": " + message);
+  }
+  try {
+    // WAL: readers (status requests) never wait for a checkpoint's write. FULL: a commit is on
+    // disk before the call returns, so a 202 means the job survives a crash of the machine too.
+    exec(db_, "PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL; PRAGMA busy_timeout=5000;");
+    exec(db_, kSchema);
+  } catch (...) {
+    sqlite3_close(db_);
+    throw;
+  }
+}
+
+JobStore::~JobStore() { sqlite3_close(db_); }
+
+int64_t JobStore::insert(const Json& request) {
+  std::lock_guard lock(mutex_);
+  Statement insert(db_, "INSERT INTO jobs (state, request, created) VALUES (?, ?, ?)");
+  insert.bind(1, std::string(state_name(JobState::Queued)))
+      .bind(2, request.dump())
+      .bind(3, now_iso8601())
+      .step();
+  return sqlite3_last_insert_rowid(db_);
+}
+
+std::optional<JobRecord> JobStore::get(int64_t id) const {
+  std::lock_guard lock(mutex_);
+  Statement select(db_, std::string("SELECT ") + kColumns + " FROM jobs WHERE id = ?");
+  select.bind(1, id);
+  if (!select.step()) return std::nullopt;
+  return read_row(select);
+}
+
+std::vector<JobRecord> JobStore::list(bool unfinished_only) const {
+  std::lock_guard lock(mutex_);
+  Statement select(db_, std::string("SELECT ") + kColumns + " FROM jobs" +
+                            (unfinished_only ? " WHERE state IN ('queued', 'running')" : "") +
+                            " ORDER BY id");
+  std::vector<JobRecord> jobs;
+  while (select.step()) jobs.push_back(read_row(select));
+  return jobs;
+}
+
+void JobStore::update(const JobRecord& job) {
+  std::lock_guard lock(mutex_);
+  Statement update(db_,
+                   "UPDATE jobs SET state = ?, samples = ?, elapsed = ?, error = ?, progress = ?, "
+                   "checkpoint_samples = ?, message = ?, series = ? WHERE id = ?");
+  update.bind(1, std::string(state_name(job.state)))
+      .bind(2, int64_t(job.samples))
+      .bind(3, job.elapsed)
+      .bind(4, job.error)
+      .bind(5, job.progress)
+      .bind(6, int64_t(job.checkpoint_samples))
+      .bind(7, job.message)
+      .bind(8, job.series.to_json()["series"].dump())
+      .bind(9, job.id)
+      .step();
+}
+
+}  // namespace geodesic::jobs

@@ -1,0 +1,214 @@
+// The jobs API of a real `geodesic serve` on 127.0.0.1: a job's life from submission to its
+// files, cancellation, the queue limit, and the errors for bad requests. Every answer is
+// checked against proto/openapi.json.
+#include <algorithm>
+#include <fstream>
+#include <string>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "job_daemon.h"
+#include "render/image_io.h"
+
+namespace geodesic::test {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+// The white furnace (docs: radiance converges to emission / (1 - albedo) = 2) at a small size.
+json furnace_job(int spp) {
+  return {{"scene", "furnace"}, {"width", 32}, {"height", 24}, {"spp", spp}};
+}
+
+Image decode(const std::string& bytes, const TempDir& dir, const std::string& extension) {
+  const fs::path file = dir.path() / ("download." + extension);
+  std::ofstream(file, std::ios::binary) << bytes;
+  return read_image(file);
+}
+
+std::string job_path(int64_t id, const std::string& rest = "") {
+  return "/api/jobs/" + std::to_string(id) + rest;
+}
+
+TEST(JobsApi, JobRunsToItsFilesAndReport) {
+  TempDir data;
+  DaemonProcess daemon(data.path() / "data");
+  const JobsApi api(daemon.port());
+
+  const int64_t id = api.submit(furnace_job(64));
+  const ApiReply list = api.get("/api/jobs");
+  ASSERT_EQ(list.status, 200u);
+  for (const auto& error : openapi_errors(list.json, "JobList")) ADD_FAILURE() << error;
+  ASSERT_EQ(list.json["jobs"].size(), 1u);
+  EXPECT_EQ(list.json["jobs"][0]["id"], id);
+
+  const json done = api.wait_for(id, [](const json& s) { return s["state"] != "queued" && s["state"] != "running"; },
+                                 std::chrono::seconds(240));
+  ASSERT_EQ(done["state"], "done") << done.dump();
+  EXPECT_EQ(done["samples"], 64);
+  EXPECT_EQ(done["progress"], 1.0);
+  EXPECT_GT(done["estimated_error"].get<double>(), 0.0);
+  ASSERT_FALSE(done["series"].empty());
+  EXPECT_EQ(done["series"].back()["spp"], 64);
+  for (const char* format : {"exr", "png", "jpg"})
+    EXPECT_EQ(done["results"][format], job_path(id, std::string("/result.") + format));
+
+  TempDir downloads;
+  const ApiReply exr = api.get(job_path(id, "/result.exr"));
+  ASSERT_EQ(exr.status, 200u);
+  EXPECT_EQ(exr.content_type, "image/x-exr");
+  const Image image = decode(exr.body, downloads, "exr");
+  EXPECT_EQ(image.width, 32);
+  EXPECT_EQ(image.height, 24);
+  double sum = 0;
+  for (float v : image.rgb) sum += v;
+  EXPECT_NEAR(sum / double(image.rgb.size()), 2.0, 0.2);  // the furnace's radiance
+  for (const char* format : {"png", "jpg"}) {
+    const ApiReply reply = api.get(job_path(id, std::string("/result.") + format));
+    ASSERT_EQ(reply.status, 200u) << format;
+    const Image decoded = decode(reply.body, downloads, format);
+    EXPECT_EQ(decoded.width, 32) << format;
+    EXPECT_EQ(decoded.height, 24) << format;
+  }
+
+  const ApiReply report = api.get(job_path(id, "/report.json"));
+  ASSERT_EQ(report.status, 200u);
+  for (const auto& error : openapi_errors(report.json, "JobReport")) ADD_FAILURE() << error;
+  EXPECT_EQ(report.json["stop"]["spp"], 64);
+  EXPECT_EQ(report.json["series"], done["series"]);
+  const ApiReply csv = api.get(job_path(id, "/report.csv"));
+  ASSERT_EQ(csv.status, 200u);
+  EXPECT_TRUE(csv.body.starts_with("seconds,spp,estimated_error\n"));
+  EXPECT_EQ(std::count(csv.body.begin(), csv.body.end(), '\n'), long(done["series"].size()) + 1);
+
+  // The served OpenAPI document is proto/openapi.json.
+  std::ifstream source(GEODESIC_SOURCE_DIR "/proto/openapi.json");
+  EXPECT_EQ(api.get("/api/openapi.json").json, json::parse(source));
+}
+
+TEST(JobsApi, StopsAfterSecondsOrAtTheTargetError) {
+  TempDir data;
+  DaemonProcess daemon(data.path() / "data", {"--max-jobs", "2"});
+  const JobsApi api(daemon.port());
+  const auto job = [](const char* stop, double value) {
+    return json{{"scene", "furnace"}, {"width", 32}, {"height", 24}, {stop, value}, {"formats", {"png"}}};
+  };
+  const int64_t timed = api.submit(job("seconds", 1.0));
+  const int64_t precise = api.submit(job("target_error", 0.05));
+  const auto done = [](const json& s) { return s["state"] == "done"; };
+
+  // Each stops at the end of the first pass that meets its condition: every earlier point of
+  // its series falls short of it.
+  const json after_seconds = api.wait_for(timed, done, std::chrono::seconds(240));
+  EXPECT_GE(after_seconds["elapsed"].get<double>(), 1.0);
+  EXPECT_GT(after_seconds["samples"].get<int>(), 0);
+  const json& timed_series = after_seconds["series"];
+  for (size_t i = 0; i + 1 < timed_series.size(); ++i) EXPECT_LT(timed_series[i]["seconds"].get<double>(), 1.0);
+
+  const json after_error = api.wait_for(precise, done, std::chrono::seconds(240));
+  EXPECT_LE(after_error["estimated_error"].get<double>(), 0.05);
+  EXPECT_GE(after_error["samples"].get<int>(), 8);
+  EXPECT_EQ(after_error["progress"], 1.0);
+  const json& precise_series = after_error["series"];
+  for (size_t i = 0; i + 1 < precise_series.size(); ++i)
+    if (precise_series[i]["spp"].get<int>() >= 8) EXPECT_GT(precise_series[i]["estimated_error"].get<double>(), 0.05);
+}
+
+TEST(JobsApi, CancelQueueLimitAndStates) {
+  TempDir data;
+  DaemonProcess daemon(data.path() / "data", {"--max-jobs", "1", "--max-queue", "1"});
+  const JobsApi api(daemon.port());
+
+  const int64_t running = api.submit(furnace_job(1 << 20));
+  api.wait_for(running, [](const json& s) { return s["samples"].get<int>() > 0; },
+               std::chrono::seconds(240));
+  const int64_t queued = api.submit(furnace_job(16));
+  EXPECT_EQ(api.get(job_path(queued)).json["state"], "queued");
+
+  const ApiReply full = api.post("/api/jobs", furnace_job(16));
+  EXPECT_EQ(full.status, 429u);
+  EXPECT_TRUE(full.json["error"].get<std::string>().starts_with("queue:")) << full.body;
+  EXPECT_EQ(api.get(job_path(queued, "/result.png")).status, 409u);
+
+  const ApiReply cancel_queued = api.request(http::verb::delete_, job_path(queued));
+  EXPECT_EQ(cancel_queued.status, 200u);
+  EXPECT_EQ(cancel_queued.json["state"], "cancelled");
+  const ApiReply cancel_running = api.request(http::verb::delete_, job_path(running));
+  EXPECT_EQ(cancel_running.status, 200u);
+  EXPECT_EQ(cancel_running.json["state"], "cancelled");
+  EXPECT_GT(cancel_running.json["samples"].get<int>(), 0);
+  // The runner deletes the checkpoint when it next has the device (within a slice or two).
+  const fs::path checkpoint = data.path() / "data" / "jobs" / std::to_string(running) / "checkpoint.bin";
+  for (int i = 0; i < 50 && fs::exists(checkpoint); ++i) std::this_thread::sleep_for(100ms);
+  EXPECT_FALSE(fs::exists(checkpoint));
+
+  EXPECT_EQ(api.request(http::verb::delete_, job_path(running)).status, 409u);
+  EXPECT_EQ(api.request(http::verb::delete_, job_path(9999)).status, 404u);
+  for (const json& job : api.get("/api/jobs").json["jobs"]) EXPECT_EQ(job["state"], "cancelled");
+
+  // The queue goes on after cancellations.
+  const int64_t next = api.submit(furnace_job(8));
+  EXPECT_EQ(api.wait_for(next, [](const json& s) { return s["state"] == "done"; })["samples"], 8);
+}
+
+TEST(JobsApi, BadRequestsNameTheField) {
+  TempDir data;
+  DaemonProcess daemon(data.path() / "data");
+  const JobsApi api(daemon.port());
+  auto error_of = [&](const std::string& body) {
+    const ApiReply reply = api.request(http::verb::post, "/api/jobs", body);
+    EXPECT_EQ(reply.status, 400u) << body;
+    return reply.json.value("error", std::string());
+  };
+  auto starts = [](const std::string& text, const std::string& prefix) {
+    return text.starts_with(prefix) ? ::testing::AssertionSuccess()
+                                    : ::testing::AssertionFailure() << text;
+  };
+  const json job = furnace_job(16);
+  auto with = [&](const std::string& field, const json& value) {
+    json changed = job;
+    changed[field] = value;
+    return changed.dump();
+  };
+  EXPECT_TRUE(starts(error_of("{\"scene\": "), "body: invalid JSON"));
+  EXPECT_TRUE(starts(error_of("[1, 2]"), "body: must be a JSON object"));
+  EXPECT_TRUE(starts(error_of(with("colour", "red")), "colour: unknown field"));
+  json no_scene = job;
+  no_scene.erase("scene");
+  EXPECT_TRUE(starts(error_of(no_scene.dump()), "scene: required"));
+  EXPECT_TRUE(starts(error_of(with("scene", "atlantis")), "scene: unknown bundled scene"));
+  const json document = {{"geometry", "euclidean"},
+                         {"camera", {{"position", {0, 0, 0}}, {"look_at", {0, 0, -1}}, {"fov_y", 60}}},
+                         {"materials", {{"m", {{"diffuse", 0.5}}}}},
+                         {"objects", {{{"type", "sphere"}, {"material", "m"}, {"center", {0, 0, -3}}, {"radius", -1}}}}};
+  EXPECT_TRUE(starts(error_of(with("scene", document)), "scene.objects[0].radius:"));
+  EXPECT_TRUE(starts(error_of(with("width", 100000)), "width: must be an integer in [16, 1920]"));
+  EXPECT_TRUE(starts(error_of(with("height", "tall")), "height:"));
+  EXPECT_TRUE(starts(error_of(with("spp", 0)), "spp:"));
+  EXPECT_TRUE(starts(error_of(with("seconds", 5)), "spp: give exactly one stop condition"));
+  json no_stop = job;
+  no_stop.erase("spp");
+  EXPECT_TRUE(starts(error_of(no_stop.dump()), "spp: give exactly one stop condition"));
+  EXPECT_TRUE(starts(error_of(with("formats", {"png", "gif"})), "formats[1]:"));
+  EXPECT_TRUE(starts(error_of(with("camera", {1, 2, 3})), "camera:"));
+  EXPECT_TRUE(starts(error_of(with("max_depth", 99)), "max_depth:"));
+
+  // Too big: a body over the limit (1 MiB) is 413, answered from its header, and the
+  // connection closes.
+  const RawReply huge = raw_exchange(
+      daemon.port(), "POST /api/jobs HTTP/1.1\r\nHost: x\r\nContent-Length: 2097152\r\n\r\n", 10s);
+  EXPECT_TRUE(huge.data.starts_with("HTTP/1.1 413")) << huge.data;
+  EXPECT_NE(huge.data.find("{\"error\":\"body: larger than 1048576 bytes\"}"), std::string::npos);
+  EXPECT_TRUE(huge.closed);
+
+  EXPECT_EQ(api.get("/api/jobs/12345").status, 404u);
+  EXPECT_EQ(api.get("/api/jobs/not-a-number").status, 404u);
+  EXPECT_EQ(api.get("/api/jobs/1/result.gif").status, 404u);
+  EXPECT_EQ(api.request(http::verb::put, "/api/jobs").status, 405u);
+  EXPECT_TRUE(api.get("/api/jobs").json["jobs"].empty());  // nothing invalid was stored
+}
+
+}  // namespace
+}  // namespace geodesic::test
