@@ -1,6 +1,7 @@
 // Small double-precision vector and matrix types: the reference precision for all geometry.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -73,6 +74,14 @@ struct Mat4 {
     for (int c = 0; c < 4; ++c)
       for (int r = 0; r < 4; ++r) out[c * 4 + r] = static_cast<float>(m[r][c]);
     return out;
+  }
+
+  // The largest |entry|: the scale of a matrix, for relative tolerances.
+  double max_abs() const {
+    double r = 0;
+    for (const auto& row : m)
+      for (double x : row) r = std::max(r, x < 0 ? -x : x);
+    return r;
   }
 };
 

@@ -141,17 +141,10 @@ std::vector<RawMatrix> read_snappy(std::string_view text, const std::string& sou
   return out;
 }
 
-double max_abs(const Mat4& g) {
-  double m = 0;
-  for (const auto& row : g.m)
-    for (double x : row) m = std::max(m, std::abs(x));
-  return m;
-}
-
 // The models whose isometry `g` is, as a bit set over GeometryKind.
 unsigned models_of(const Mat4& g) {
   unsigned bits = 0;
-  const double size = std::max(1.0, max_abs(g));
+  const double size = std::max(1.0, g.max_abs());
   for (const GeometryKind k :
        {GeometryKind::Euclidean, GeometryKind::Hyperbolic, GeometryKind::Spherical}) {
     const double bound = kGeneratorTolerance * (k == GeometryKind::Euclidean ? 1 : size * size);

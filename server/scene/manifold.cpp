@@ -38,17 +38,10 @@ std::vector<ChartPlane> planes_of(const std::vector<DomainFace>& faces) {
   return planes;
 }
 
-double max_abs(const Mat4& g) {
-  double m = 0;
-  for (const auto& row : g.m)
-    for (double x : row) m = std::max(m, std::abs(x));
-  return m;
-}
-
 double distance_from_identity(const Mat4& g) {
   Mat4 d = g;
   for (int i = 0; i < 4; ++i) d.m[i][i] -= 1;
-  return max_abs(d);
+  return d.max_abs();
 }
 
 // Face distance in the chart of a regular dodecahedron with interior dihedral angle theta.
@@ -181,7 +174,7 @@ void check_pairing(GeometryKind kind, const std::vector<DomainFace>& faces,
   const int p = face.partner;
   const std::string path = face_path(f);
   // Round-off in g^T G g grows with |g|^2 (E3: only the linear part enters).
-  const double size = std::max(1.0, max_abs(face.pairing));
+  const double size = std::max(1.0, face.pairing.max_abs());
   const double bound = tol * (kind == GeometryKind::Euclidean ? 1 : size * size);
   const double error = model::isometry_error(kind, face.pairing);
   if (!(error <= bound))
@@ -371,7 +364,7 @@ void validate_manifold(GeometryKind kind, const Manifold& m, double tol) {
     double size = 1;
     for (int i = 0; i < c.order; ++i) {
       power = c.transformation * power;
-      size = std::max(size, max_abs(power));
+      size = std::max(size, power.max_abs());
     }
     const double error = distance_from_identity(power);
     if (error > 1e3 * tol * size * size)
