@@ -51,7 +51,7 @@ int main(int argc, char** argv) {
   uint32_t spp = 16;
   int repeat = 3;
   bool russian_roulette = false;
-  std::string geometry;
+  std::string geometry, lighting;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--spp" && i + 1 < argc) spp = std::stoul(argv[++i]);
@@ -59,17 +59,23 @@ int main(int argc, char** argv) {
     else if (a == "--repeat" && i + 1 < argc) repeat = std::stoi(argv[++i]);
     else if (a == "--russian-roulette") russian_roulette = true;
     else if (a == "--geometry" && i + 1 < argc) geometry = argv[++i];
+    else if (a == "--lighting" && i + 1 < argc) lighting = argv[++i];
     else scene_path = a;
   }
   try {
     Scene scene = load_scene_file(scene_path);
-    scene.render.russian_roulette = scene.render.russian_roulette || russian_roulette;
+    // Full depth unless asked: the physical model's own default would end paths early.
+    scene.render.russian_roulette = russian_roulette;
+    if (lighting == "paper") scene.render.lighting = LightingModel::Paper;
+    if (lighting == "physical") scene.render.lighting = LightingModel::Physical;
     for (GeometryKind kind :
          {GeometryKind::Euclidean, GeometryKind::Hyperbolic, GeometryKind::Spherical})
       if (geometry == geometry_name(kind)) scene.geometry = kind;
     VulkanContext ctx(device);
-    std::printf("scene %s (%s), %dx%d, depth %d%s, %u spp per run, best of %d, device %s\n",
-                scene_path.c_str(), geometry_name(scene.geometry), scene.render.width,
+    std::printf("scene %s (%s, %s model), %dx%d, depth %d%s, %u spp per run, best of %d, device %s\n",
+                scene_path.c_str(), geometry_name(scene.geometry),
+                scene.render.lighting == LightingModel::Paper ? "paper" : "physical",
+                scene.render.width,
                 scene.render.height,
                 scene.render.max_depth,
                 scene.render.russian_roulette ? " with Russian roulette" : "", spp, repeat,
