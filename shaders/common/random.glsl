@@ -21,4 +21,13 @@ float rngNext(inout uint state) {
   return float(word >> 8) * (1.0 / 16777216.0);
 }
 
+// Russian roulette: a path survives with probability q = min(1, max throughput) and is divided
+// by q, so the expectation is unchanged and dim paths end early.
+bool survivesRussianRoulette(inout vec3 throughput, inout uint rng) {
+  float q = min(1.0, max(throughput.r, max(throughput.g, throughput.b)));
+  if (rngNext(rng) >= q) return false;
+  throughput /= q;
+  return true;
+}
+
 #endif

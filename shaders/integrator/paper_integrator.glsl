@@ -22,12 +22,8 @@ vec3 paperRadiance(GeodesicRay ray, inout uint rng) {
     vec3 direction, weight;
     if (!sampleBounce(n, ng, incoming, m, rng, direction, weight)) break;
     throughput *= weight;
-    if (frame.russianRoulette != 0u && depth >= 1u) {
-      // Survive with probability q and divide by it: unbiased, and dim paths end early.
-      float q = min(1.0, max(throughput.r, max(throughput.g, throughput.b)));
-      if (rngNext(rng) >= q) break;
-      throughput /= q;
-    }
+    if (frame.russianRoulette != 0u && depth >= 1u && !survivesRussianRoulette(throughput, rng))
+      break;
     vec4 origin = offsetFromSurface(s.position, s.geometricNormal);
     ray = GeodesicRay(origin, normalizeTangent(origin, fromLocal(local, direction)), s.cell, ~0u);
   }

@@ -68,12 +68,8 @@ vec3 physicalRadiance(GeodesicRay ray, inout uint rng) {
     throughput *= bs.weight;
     misWeighted = nee && !bs.delta;
     bsdfDensity = bs.pdf;
-    if (frame.russianRoulette != 0u && depth >= 3u) {
-      // Survive with probability q and divide by it: unbiased, and dim paths end early.
-      float q = min(1.0, max(throughput.r, max(throughput.g, throughput.b)));
-      if (rngNext(rng) >= q) break;
-      throughput /= q;
-    }
+    if (frame.russianRoulette != 0u && depth >= 3u && !survivesRussianRoulette(throughput, rng))
+      break;
     from = s.position;
     vec4 origin = offsetFromSurface(s.position, side);
     heading = normalizeTangent(origin, direction);

@@ -43,6 +43,13 @@ float totalBranchWeight(Emitter e, vec4 x, vec4 ng) {
   return total;
 }
 
+// The cosine of the half-angle of the cone a sphere subtends from distance d to its centre,
+// sin(alpha) = sqrt(A(r) / A(d)); -1 (every direction) from inside it.
+float sphereConeCos(Emitter e, float d) {
+  if (d <= e.radius) return -1.0;
+  return sqrt(max(0.0, 1.0 - sphereAreaFactor(e.radius) / sphereAreaFactor(d)));
+}
+
 // The emitter whose cdf range holds u (binary search).
 uint chooseEmitter(float u) {
   uint lo = 0u, hi = frame.emitterCount - 1u;
@@ -117,14 +124,9 @@ bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) 
     return true;
   }
   if (e.kind == EMITTER_SPHERE) {
-    // Directions towards the sphere: its cone, sin(alpha) = sqrt(A(r) / A(d)); all of them
-    // from inside.
-    float cosMax = -1.0;
-    vec3 axis = vec3(0.0, 0.0, 1.0);
-    if (d > e.radius) {
-      cosMax = sqrt(max(0.0, 1.0 - sphereAreaFactor(e.radius) / sphereAreaFactor(d)));
-      axis = sign * toLocal(local, toward);
-    }
+    // Directions towards the sphere: the cone it subtends.
+    float cosMax = sphereConeCos(e, d);
+    vec3 axis = d > e.radius ? sign * toLocal(local, toward) : vec3(0.0, 0.0, 1.0);
     ls.direction = fromLocal(local, sampleUniformCone(axis, cosMax, u.zw));
     float t = intersectGeodesicSphere(x, ls.direction, c, e.radius, 0.0, FAR);
     if (t <= 0.0) return false;
@@ -164,7 +166,7 @@ float lightPdf(uint index, vec4 x, vec4 direction, float t, float cosLight) {
   uint branch = GEOMETRY_CURVATURE > 0.0 && t > PI ? 1u : 0u;
   // The image the geodesic met: the one whose surface passes closest to y.
   uint image = 0u;
-  float best = FAR, d = 0.0;
+  float best = FAR;
   for (uint j = 0u; j < e.imageCount; ++j) {
     float dj = geodesicDistance(y, lightImages[e.imageBegin + j] * e.center);
     float miss = e.kind == EMITTER_SPHERE ? abs(dj - e.radius) : dj;
@@ -178,13 +180,11 @@ float lightPdf(uint index, vec4 x, vec4 direction, float t, float cosLight) {
   if (e.imageCount == 0u || best > (e.kind == EMITTER_SPHERE ? slack : e.radius + slack))
     return 0.0;
   mat4 g = lightImages[e.imageBegin + image];
-  d = geodesicDistance(x, g * e.center);
+  float d = geodesicDistance(x, g * e.center);
   float choice = branchWeight(e, d, branch, vec4(0.0), vec4(0.0)) / total;
   if (choice <= 0.0) return 0.0;
   if (e.kind == EMITTER_SPHERE) {
-    float cosMax = d > e.radius
-                       ? sqrt(max(0.0, 1.0 - sphereAreaFactor(e.radius) / sphereAreaFactor(d)))
-                       : -1.0;
+    float cosMax = sphereConeCos(e, d);
     return e.pmf * choice / (2.0 * PI * (1.0 - cosMax));
   }
   vec3 xc = chartPoint(translationFrom(e.center) * (inverseIsometry(g) * y));
