@@ -11,7 +11,9 @@
 #include "cli/render_report.h"
 #include "render/convergence.h"
 #include "render/image_io.h"
+#include "render/pipeline_cache.h"
 #include "render/renderer.h"
+#include "render/shader_dump.h"
 #include "scene/default_scene.h"
 #include "scene/scene_loader.h"
 
@@ -24,6 +26,8 @@ struct RenderArgs {
   std::optional<uint64_t> seed;
   std::optional<double> seconds, target_error;
   std::string report;  // --report FILE.json: the series, also as FILE.csv
+  std::string dump_shaders, pipeline_cache;
+  PipelineVariant variant = PipelineVariant::Specialised;
 };
 
 long parse_int(const std::string& flag, const std::string& value, long min, long max) {
@@ -79,6 +83,15 @@ RenderArgs parse(int argc, char** argv) {
     else if (flag == "--device") a.device = value();
     else if (flag == "--generators") a.generators = value();
     else if (flag == "--backend") a.backend = value();
+    else if (flag == "--dump-shaders") a.dump_shaders = value();
+    else if (flag == "--pipeline-cache") a.pipeline_cache = value();
+    else if (flag == "--pipeline") {
+      const std::string v = value();
+      if (v != "specialised" && v != "all-features")
+        throw std::invalid_argument("--pipeline: must be \"specialised\" or \"all-features\", not \"" +
+                                    v + "\"");
+      a.variant = v == "specialised" ? PipelineVariant::Specialised : PipelineVariant::AllFeatures;
+    }
     else if (flag == "--lighting") {
       a.lighting = value();
       if (a.lighting != "physical" && a.lighting != "paper")
@@ -127,7 +140,13 @@ int render_command(int argc, char** argv) {
     stop.spp = uint32_t(args.spp.value_or(scene.render.spp));
 
   VulkanContext ctx(args.device);
-  Renderer renderer(ctx, scene, backend);
+  if (!args.pipeline_cache.empty()) ctx.pipeline_cache().set_directory(args.pipeline_cache);
+  Renderer renderer(ctx, scene, backend, args.variant);
+  if (!args.dump_shaders.empty()) dump_shaders(renderer, args.dump_shaders);
+  const CachedPipeline& pipeline = renderer.backend().pipeline();
+  std::printf("pipeline: %s; %zu KiB of SPIR-V, built in %.2f s\n",
+              renderer.features().summary().c_str(), pipeline.spirv_bytes / 1024,
+              pipeline.build_seconds);
   ProgressBar bar;
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();

@@ -104,6 +104,7 @@ int serve_command(int argc, char** argv) {
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
 
   RenderService render(options.device, GEODESIC_SOURCE_DIR "/scenes");
+  render.use_pipeline_cache(options.jobs.data_dir / "pipeline-cache");
   jobs::JobQueue jobs(render, options.jobs);
   net::Server server(render, options.server, &jobs);
   std::printf("geodesic: serving http://%s:%u/ (WebSocket at /ws) on %s, jobs in %s\n",

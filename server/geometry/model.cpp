@@ -176,6 +176,10 @@ Mat4 inverse_isometry(GeometryKind k, const Mat4& g) {
   return r;
 }
 
+Vec4 reflect_in_chart_plane(GeometryKind k, const Vec4& x, const Vec3& normal, double delta) {
+  return reflection_in_chart_plane(k, normal, delta) * x;
+}
+
 Mat4 reflection_in_chart_plane(GeometryKind k, const Vec3& normal, double delta) {
   Mat4 r = Mat4::identity();
   if (k == GeometryKind::Euclidean) {  // x -> x - 2 (N.x - delta) N

@@ -82,6 +82,9 @@ Mat4 inverse_isometry(GeometryKind k, const Mat4& g);
 // A geodesic plane given in the chart as {X : N . X = delta} (N unit): the reflection in it,
 // and the unit normal (pointing along +N) in the tangent space at a point q on it.
 Mat4 reflection_in_chart_plane(GeometryKind k, const Vec3& normal, double delta);
+// That reflection applied to a point or tangent x: twin of reflectInChartPlane, which mirrored
+// quotients use instead of their pairing matrices.
+Vec4 reflect_in_chart_plane(GeometryKind k, const Vec4& x, const Vec3& normal, double delta);
 Vec4 chart_plane_normal(GeometryKind k, const Vec4& q, const Vec3& normal, double delta);
 
 // Outward unit normal at q of the geodesic sphere centred at c.

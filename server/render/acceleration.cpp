@@ -113,7 +113,9 @@ SceneAccelerationStructures SceneAccelerationStructures::build(VulkanContext& ct
 
   for (uint32_t c = 0; c < scene.cell_geometry.size(); ++c) {
     const CellGeometry& cell = scene.cell_geometry[c];
-    const uint8_t mask = uint8_t(1u << c);
+    // One mask bit per cell; past eight cells they share bits and the shaders check the cell
+    // of each candidate (SHARED_CELL_MASKS).
+    const uint8_t mask = uint8_t(1u << (c % 8));
     if (cell.triangle_count > 0) {
       VkAccelerationStructureGeometryKHR geometry{
           VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};

@@ -1,4 +1,5 @@
 // Back end 1: the integrator as a compute shader tracing with ray queries.
+#include "render/pipeline_cache.h"
 #include "render/shader_module.h"
 #include "render/trace_backend.h"
 
@@ -9,36 +10,42 @@ constexpr uint32_t kGroupSizeX = 8, kGroupSizeY = 8;  // ray_query.comp local_si
 
 class RayQueryBackend : public TraceBackend {
  public:
-  RayQueryBackend(VulkanContext& ctx, SceneResources& res) : ctx_(ctx), res_(res) {
-    ShaderModule module(ctx.device(), "ray_query.comp", res.geometry());
-    VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
-    info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
-    info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
-    info.stage.module = module.handle();
-    info.stage.pName = "main";
-    info.layout = res.pipeline_layout();
-    vk_check(vkCreateComputePipelines(ctx.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_),
-             "vkCreateComputePipelines");
+  RayQueryBackend(VulkanContext& ctx, SceneResources& res) : res_(res) {
+    pipeline_ = ctx.pipeline_cache().pipeline(
+        name(), res.features(), entries(),
+        [&](const std::vector<Spirv>& spirv, const SceneLayout& layout, VkPipelineCache cache) {
+          ShaderModule module(ctx.device(), *spirv[0]);
+          VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+          info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+          info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
+          info.stage.module = module.handle();
+          info.stage.pName = "main";
+          info.layout = layout.pipeline();
+          VkPipeline pipeline = VK_NULL_HANDLE;
+          vk_check(vkCreateComputePipelines(ctx.device(), cache, 1, &info, nullptr, &pipeline),
+                   "vkCreateComputePipelines");
+          return pipeline;
+        });
   }
 
-  ~RayQueryBackend() override { vkDestroyPipeline(ctx_.device(), pipeline_, nullptr); }
-
   const char* name() const override { return "ray-query"; }
+  const CachedPipeline& pipeline() const override { return *pipeline_; }
+  std::vector<std::string> entries() const override { return {"entry/ray_query.comp"}; }
 
   void record(VkCommandBuffer cmd, SampleRange range) override {
     VkDescriptorSet set = res_.descriptor_set();
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_->pipeline);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, res_.pipeline_layout(), 0, 1,
                             &set, 0, nullptr);
-    vkCmdPushConstants(cmd, res_.pipeline_layout(), SceneResources::kShaderStages, 0, sizeof(range), &range);
+    vkCmdPushConstants(cmd, res_.pipeline_layout(), SceneLayout::kShaderStages, 0, sizeof(range),
+                       &range);
     vkCmdDispatch(cmd, (res_.width() + kGroupSizeX - 1) / kGroupSizeX,
                   (range.row_count + kGroupSizeY - 1) / kGroupSizeY, 1);
   }
 
  private:
-  VulkanContext& ctx_;
   SceneResources& res_;
-  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  std::shared_ptr<const CachedPipeline> pipeline_;
 };
 
 }  // namespace

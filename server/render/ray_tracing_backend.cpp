@@ -1,6 +1,6 @@
 // Back end 2: a VK_KHR_ray_tracing_pipeline pipeline. Ray generation runs the integrator; the
 // shader binding table holds one miss record and one hit group per primitive kind (triangles;
-// spheres with their intersection shader).
+// spheres with their intersection shader), made only for the kinds the scene has.
 #include <cstring>
 #include <vector>
 
@@ -18,20 +18,36 @@ VkDeviceSize align_up(VkDeviceSize value, VkDeviceSize alignment) {
 class RayTracingBackend : public TraceBackend {
  public:
   RayTracingBackend(VulkanContext& ctx, SceneResources& res) : ctx_(ctx), res_(res) {
-    create_pipeline();
+    const PipelineFeatures& f = res.features();
+    pipeline_ = ctx.pipeline_cache().pipeline(
+        name(), f, entries(),
+        [&](const std::vector<Spirv>& spirv, const SceneLayout& layout, VkPipelineCache cache) {
+          return create_pipeline(spirv, layout, cache);
+        });
     create_binding_table();
   }
 
-  ~RayTracingBackend() override { vkDestroyPipeline(ctx_.device(), pipeline_, nullptr); }
-
   const char* name() const override { return "pipeline"; }
+  const CachedPipeline& pipeline() const override { return *pipeline_; }
+
+  // Ray generation and miss, then the hit shaders of the primitive kinds present (with an
+  // any-hit shader each where cells share mask bits).
+  std::vector<std::string> entries() const override {
+    const PipelineFeatures& f = res_.features();
+    std::vector<std::string> e{"entry/raygen.rgen", "entry/miss.rmiss"};
+    if (f.triangles) e.push_back("entry/triangle.rchit");
+    if (f.triangles && f.shared_cell_masks) e.push_back("entry/triangle.rahit");
+    if (f.spheres) e.insert(e.end(), {"entry/sphere.rchit", "entry/sphere.rint"});
+    if (f.spheres && f.shared_cell_masks) e.push_back("entry/sphere.rahit");
+    return e;
+  }
 
   void record(VkCommandBuffer cmd, SampleRange range) override {
     VkDescriptorSet set = res_.descriptor_set();
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline_);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline_->pipeline);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, res_.pipeline_layout(),
                             0, 1, &set, 0, nullptr);
-    vkCmdPushConstants(cmd, res_.pipeline_layout(), SceneResources::kShaderStages, 0,
+    vkCmdPushConstants(cmd, res_.pipeline_layout(), SceneLayout::kShaderStages, 0,
                        sizeof(range), &range);
     VkStridedDeviceAddressRegionKHR callable{};
     ctx_.rt().cmd_trace_rays(cmd, &raygen_region_, &miss_region_, &hit_region_, &callable,
@@ -39,58 +55,77 @@ class RayTracingBackend : public TraceBackend {
   }
 
  private:
-  // Shader groups, in shader-binding-table order.
-  enum Group : uint32_t { kRaygen, kMiss, kTriangleHit, kSphereHit, kGroupCount };
+  // Groups in pipeline order: raygen, miss, then a triangle and/or a sphere hit group.
+  uint32_t group_count() const {
+    return 2u + (res_.features().triangles ? 1u : 0u) + (res_.features().spheres ? 1u : 0u);
+  }
 
-  void create_pipeline() {
+  VkPipeline create_pipeline(const std::vector<Spirv>& spirv, const SceneLayout& layout,
+                             VkPipelineCache cache) const {
     VkDevice device = ctx_.device();
-    const GeometryKind g = res_.geometry();
-    ShaderModule raygen(device, "raygen.rgen", g), miss(device, "miss.rmiss", g),
-        triangle(device, "triangle.rchit", g), sphere_hit(device, "sphere.rchit", g),
-        sphere_int(device, "sphere.rint", g);
-    const std::pair<VkShaderStageFlagBits, VkShaderModule> modules[] = {
-        {VK_SHADER_STAGE_RAYGEN_BIT_KHR, raygen.handle()},
-        {VK_SHADER_STAGE_MISS_BIT_KHR, miss.handle()},
-        {VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR, triangle.handle()},
-        {VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR, sphere_hit.handle()},
-        {VK_SHADER_STAGE_INTERSECTION_BIT_KHR, sphere_int.handle()}};
+    const PipelineFeatures& f = res_.features();
+    std::vector<std::unique_ptr<ShaderModule>> modules;
     std::vector<VkPipelineShaderStageCreateInfo> stages;
-    for (const auto& [stage, module] : modules) {
+    const std::vector<std::string> names = entries();
+    for (size_t i = 0; i < spirv.size(); ++i) {
+      static const std::pair<const char*, VkShaderStageFlagBits> kStages[] = {
+          {".rgen", VK_SHADER_STAGE_RAYGEN_BIT_KHR},
+          {".rmiss", VK_SHADER_STAGE_MISS_BIT_KHR},
+          {".rchit", VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR},
+          {".rahit", VK_SHADER_STAGE_ANY_HIT_BIT_KHR},
+          {".rint", VK_SHADER_STAGE_INTERSECTION_BIT_KHR}};
+      modules.push_back(std::make_unique<ShaderModule>(device, *spirv[i]));
       VkPipelineShaderStageCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
-      info.stage = stage;
-      info.module = module;
+      for (const auto& [ext, stage] : kStages)
+        if (names[i].ends_with(ext)) info.stage = stage;
+      info.module = modules.back()->handle();
       info.pName = "main";
       stages.push_back(info);
     }
 
-    auto group = [](VkRayTracingShaderGroupTypeKHR type, uint32_t general, uint32_t closest,
-                    uint32_t intersection) {
+    constexpr uint32_t none = VK_SHADER_UNUSED_KHR;
+    // The stage index of an entry (`names` is in stage order), or none.
+    auto stage_of = [&](const char* entry) {
+      for (uint32_t i = 0; i < names.size(); ++i)
+        if (names[i] == entry) return i;
+      return none;
+    };
+    auto group = [&](VkRayTracingShaderGroupTypeKHR type, uint32_t general, const char* closest,
+                     const char* any, const char* intersection) {
       VkRayTracingShaderGroupCreateInfoKHR g{
           VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR};
       g.type = type;
       g.generalShader = general;
-      g.closestHitShader = closest;
-      g.anyHitShader = VK_SHADER_UNUSED_KHR;
-      g.intersectionShader = intersection;
+      g.closestHitShader = closest ? stage_of(closest) : none;
+      g.anyHitShader = any ? stage_of(any) : none;
+      g.intersectionShader = intersection ? stage_of(intersection) : none;
       return g;
     };
-    constexpr uint32_t none = VK_SHADER_UNUSED_KHR;
-    const VkRayTracingShaderGroupCreateInfoKHR groups[kGroupCount] = {
-        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 0, none, none),
-        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 1, none, none),
-        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR, none, 2, none),
-        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, none, 3, 4)};
+    std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups = {
+        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 0, nullptr, nullptr, nullptr),
+        group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 1, nullptr, nullptr, nullptr)};
+    if (f.triangles)
+      groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR, none,
+                             "entry/triangle.rchit", "entry/triangle.rahit", nullptr));
+    if (f.spheres)
+      groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, none,
+                             "entry/sphere.rchit", "entry/sphere.rahit", "entry/sphere.rint"));
 
     VkRayTracingPipelineCreateInfoKHR info{VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR};
+    if (f.primitive_culling && !f.spheres) info.flags |= VK_PIPELINE_CREATE_RAY_TRACING_SKIP_AABBS_BIT_KHR;
+    if (f.primitive_culling && !f.triangles)
+      info.flags |= VK_PIPELINE_CREATE_RAY_TRACING_SKIP_TRIANGLES_BIT_KHR;
     info.stageCount = static_cast<uint32_t>(stages.size());
     info.pStages = stages.data();
-    info.groupCount = kGroupCount;
-    info.pGroups = groups;
+    info.groupCount = static_cast<uint32_t>(groups.size());
+    info.pGroups = groups.data();
     info.maxPipelineRayRecursionDepth = 1;  // only ray generation traces
-    info.layout = res_.pipeline_layout();
-    vk_check(ctx_.rt().create_ray_tracing_pipelines(device, VK_NULL_HANDLE, VK_NULL_HANDLE, 1,
-                                                    &info, nullptr, &pipeline_),
+    info.layout = layout.pipeline();
+    VkPipeline pipeline = VK_NULL_HANDLE;
+    vk_check(ctx_.rt().create_ray_tracing_pipelines(device, VK_NULL_HANDLE, cache, 1, &info,
+                                                    nullptr, &pipeline),
              "vkCreateRayTracingPipelinesKHR");
+    return pipeline;
   }
 
   void create_binding_table() {
@@ -99,12 +134,15 @@ class RayTracingBackend : public TraceBackend {
     const VkDeviceSize stride = align_up(handle_size, props.shaderGroupHandleAlignment);
     const VkDeviceSize base = props.shaderGroupBaseAlignment;
 
-    std::vector<uint8_t> handles(handle_size * kGroupCount);
-    vk_check(ctx_.rt().get_shader_group_handles(ctx_.device(), pipeline_, 0, kGroupCount,
+    const uint32_t groups = group_count();
+    std::vector<uint8_t> handles(handle_size * groups);
+    vk_check(ctx_.rt().get_shader_group_handles(ctx_.device(), pipeline_->pipeline, 0, groups,
                                                 handles.size(), handles.data()),
              "vkGetRayTracingShaderGroupHandlesKHR");
 
-    // Regions: raygen | miss | triangle hit, sphere hit; each base-aligned.
+    // Regions: raygen | miss | triangle hit, sphere hit; each base-aligned. Instances pick
+    // their hit record by kind (acceleration.h: 0 triangles, 1 spheres); a kind the scene
+    // lacks is never hit, and its record repeats the other one.
     const VkDeviceSize raygen_size = align_up(stride, base);
     const VkDeviceSize miss_size = align_up(stride, base);
     const VkDeviceSize hit_size = align_up(2 * stride, base);
@@ -112,13 +150,16 @@ class RayTracingBackend : public TraceBackend {
                        VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR);
     const VkDeviceAddress start = align_up(table_.address(), base);
     auto* bytes = static_cast<uint8_t*>(table_.mapped()) + (start - table_.address());
-    auto copy = [&](Group g, VkDeviceSize offset) {
-      std::memcpy(bytes + offset, handles.data() + g * handle_size, handle_size);
+    auto copy = [&](uint32_t group, VkDeviceSize offset) {
+      std::memcpy(bytes + offset, handles.data() + group * handle_size, handle_size);
     };
-    copy(kRaygen, 0);
-    copy(kMiss, raygen_size);
-    copy(kTriangleHit, raygen_size + miss_size);
-    copy(kSphereHit, raygen_size + miss_size + stride);
+    copy(0, 0);
+    copy(1, raygen_size);
+    if (groups > 2) {
+      const uint32_t triangle_group = 2, sphere_group = groups - 1;
+      copy(triangle_group, raygen_size + miss_size);
+      copy(sphere_group, raygen_size + miss_size + stride);
+    }
 
     raygen_region_ = {start, raygen_size, raygen_size};
     miss_region_ = {start + raygen_size, stride, stride};
@@ -127,7 +168,7 @@ class RayTracingBackend : public TraceBackend {
 
   VulkanContext& ctx_;
   SceneResources& res_;
-  VkPipeline pipeline_ = VK_NULL_HANDLE;
+  std::shared_ptr<const CachedPipeline> pipeline_;
   GpuBuffer table_;
   VkStridedDeviceAddressRegionKHR raygen_region_{}, miss_region_{}, hit_region_{};
 };

@@ -1,5 +1,7 @@
 #include "render/render_service.h"
 
+#include "render/pipeline_cache.h"
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -240,6 +242,11 @@ RenderService::RenderService(const std::string& device, std::string scene_dir,
     : impl_(std::make_unique<Impl>(device, std::move(scene_dir), limits)) {}
 
 RenderService::~RenderService() = default;
+
+void RenderService::use_pipeline_cache(const std::filesystem::path& dir) {
+  std::lock_guard lock(impl_->mutex);
+  impl_->ctx.pipeline_cache().set_directory(dir);
+}
 
 std::vector<std::string> RenderService::bundled_scenes() const {
   std::vector<std::string> names;

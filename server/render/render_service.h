@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <string>
@@ -72,6 +73,10 @@ class RenderService {
   ~RenderService();
   RenderService(const RenderService&) = delete;
   RenderService& operator=(const RenderService&) = delete;
+
+  // Keeps compiled pipelines in `dir` too (render/pipeline_cache.h), so that a restarted daemon
+  // compiles nothing it compiled before.
+  void use_pipeline_cache(const std::filesystem::path& dir);
 
   std::vector<std::string> bundled_scenes() const;
   const ServiceLimits& limits() const;

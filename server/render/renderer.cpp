@@ -6,11 +6,12 @@
 #include "render/relative_error.h"
 
 namespace geodesic {
-Renderer::Renderer(VulkanContext& ctx, const Scene& scene, BackendKind backend)
+Renderer::Renderer(VulkanContext& ctx, const Scene& scene, BackendKind backend,
+                   PipelineVariant variant)
     : ctx_(ctx),
       geometry_(scene.geometry),
       cells_(build_cells(scene)),
-      resources_(ctx, scene),
+      resources_(ctx, scene, variant),
       backend_(make_backend(backend, ctx, resources_)) {}
 
 void Renderer::add_samples(uint32_t samples) {

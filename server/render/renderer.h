@@ -16,7 +16,10 @@ namespace geodesic {
 
 class Renderer {
  public:
-  Renderer(VulkanContext& ctx, const Scene& scene, BackendKind backend = BackendKind::Auto);
+  // `variant`: the scene's specialised pipeline, or the all-features one (the baseline the
+  // benchmarks and the equivalence tests compare it with).
+  Renderer(VulkanContext& ctx, const Scene& scene, BackendKind backend = BackendKind::Auto,
+           PipelineVariant variant = PipelineVariant::Specialised);
 
   // Adds `samples` samples per pixel, in one submission.
   void add_samples(uint32_t samples);
@@ -52,6 +55,8 @@ class Renderer {
   double estimated_error() const;
 
   const char* backend_name() const { return backend_->name(); }
+  const TraceBackend& backend() const { return *backend_; }
+  const PipelineFeatures& features() const { return resources_.features(); }
   const VulkanContext& context() const { return ctx_; }
 
  private:

@@ -1,5 +1,7 @@
 #include "render/scene_resources.h"
 
+#include "render/scene_bindings.h"
+
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -10,13 +12,6 @@ namespace geodesic {
 namespace {
 
 constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-
-// Binding numbers of shaders/common/scene_data.glsl.
-enum Binding : uint32_t {
-  kScene = 0, kAccumulation, kFrame, kSpheres, kMaterials, kLights, kPositions, kNormals,
-  kIndices, kTriangles, kRayCounts, kSphereRefs, kCells, kCellFaces, kDiagnostics,
-  kEmitters, kLightImages, kBindingCount
-};
 
 FrameUniforms make_uniforms(const Scene& scene, const PackedScene& packed) {
   FrameUniforms u{};
@@ -46,10 +41,15 @@ FrameUniforms make_uniforms(const Scene& scene, const PackedScene& packed) {
 
 }  // namespace
 
-SceneResources::SceneResources(VulkanContext& ctx, const Scene& scene)
+SceneResources::SceneResources(VulkanContext& ctx, const Scene& scene, PipelineVariant variant)
     : ctx_(ctx),
       geometry_(scene.geometry),
-      packed_(pack_scene(scene)), uniforms_(make_uniforms(scene, packed_)) {
+      packed_(pack_scene(scene)),
+      features_(variant == PipelineVariant::AllFeatures ? all_features(scene.geometry)
+                                                        : scene_features(scene, packed_)),
+      uniforms_(make_uniforms(scene, packed_)) {
+  features_.primitive_culling = ctx.description().primitive_culling;
+  features_.shared_cell_masks = packed_.cells.size() > 8;
   structures_ = SceneAccelerationStructures::build(ctx, packed_);
   capacity_ = size_t(width()) * height();
   frame_ = GpuBuffer(ctx, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
@@ -58,18 +58,22 @@ SceneResources::SceneResources(VulkanContext& ctx, const Scene& scene)
                             kStorage | VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   ray_counts_ = GpuBuffer(ctx, VkDeviceSize(width()) * height() * sizeof(uint32_t), kStorage);
   clear_accumulation();
-  spheres_ = GpuBuffer::from_vector(ctx, packed_.spheres, kStorage);
-  materials_ = GpuBuffer::from_vector(ctx, packed_.materials, kStorage);
-  lights_ = GpuBuffer::from_vector(ctx, packed_.lights, kStorage);
-  positions_ = GpuBuffer::from_vector(ctx, packed_.positions, kStorage);
-  normals_ = GpuBuffer::from_vector(ctx, packed_.normals, kStorage);
-  indices_ = GpuBuffer::from_vector(ctx, packed_.indices, kStorage);
-  triangles_ = GpuBuffer::from_vector(ctx, packed_.triangles, kStorage);
-  sphere_refs_ = GpuBuffer::from_vector(ctx, packed_.sphere_refs, kStorage);
-  cells_ = GpuBuffer::from_vector(ctx, packed_.cells, kStorage);
-  faces_ = GpuBuffer::from_vector(ctx, packed_.faces, kStorage);
-  emitters_ = GpuBuffer::from_vector(ctx, packed_.emitters, kStorage);
-  light_images_ = GpuBuffer::from_vector(ctx, packed_.light_images, kStorage);
+  // Only the buffers the pipeline reads: a binding it does not declare needs no buffer.
+  auto upload = [&](uint32_t binding, GpuBuffer& buffer, const auto& data) {
+    if (features_.uses_binding(binding)) buffer = GpuBuffer::from_vector(ctx, data, kStorage);
+  };
+  upload(kSpheresBinding, spheres_, packed_.spheres);
+  upload(kMaterialsBinding, materials_, packed_.materials);
+  upload(kLightsBinding, lights_, packed_.lights);
+  upload(kPositionsBinding, positions_, packed_.positions);
+  upload(kNormalsBinding, normals_, packed_.normals);
+  upload(kIndicesBinding, indices_, packed_.indices);
+  upload(kTrianglesBinding, triangles_, packed_.triangles);
+  upload(kSphereRefsBinding, sphere_refs_, packed_.sphere_refs);
+  upload(kCellsBinding, cells_, packed_.cells);
+  upload(kCellFacesBinding, faces_, packed_.faces);
+  upload(kEmittersBinding, emitters_, packed_.emitters);
+  upload(kLightImagesBinding, light_images_, packed_.light_images);
   diagnostics_ = GpuBuffer(ctx, sizeof(uint32_t), kStorage);
   std::memset(diagnostics_.mapped(), 0, sizeof(uint32_t));
   create_descriptors();
@@ -78,9 +82,7 @@ SceneResources::SceneResources(VulkanContext& ctx, const Scene& scene)
 SceneResources::~SceneResources() {
   VkDevice device = ctx_.device();
   vkDeviceWaitIdle(device);
-  vkDestroyPipelineLayout(device, pipeline_layout_, nullptr);
   vkDestroyDescriptorPool(device, pool_, nullptr);
-  vkDestroyDescriptorSetLayout(device, set_layout_, nullptr);
 }
 
 void SceneResources::set_view(const Mat4& camera_pose, uint32_t camera_cell, uint32_t width,
@@ -125,72 +127,51 @@ uint64_t SceneResources::traced_rays() const {
 
 void SceneResources::create_descriptors() {
   VkDevice device = ctx_.device();
-  VkDescriptorSetLayoutBinding bindings[kBindingCount]{};
-  for (uint32_t i = 0; i < kBindingCount; ++i) {
-    bindings[i].binding = i;
-    bindings[i].descriptorCount = 1;
-    bindings[i].stageFlags = SceneResources::kShaderStages;
-    bindings[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-  }
-  bindings[kScene].descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
-  bindings[kFrame].descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-  VkDescriptorSetLayoutCreateInfo layout{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  layout.bindingCount = kBindingCount;
-  layout.pBindings = bindings;
-  vk_check(vkCreateDescriptorSetLayout(device, &layout, nullptr, &set_layout_),
-           "vkCreateDescriptorSetLayout");
+  const std::vector<uint32_t> bindings = features_.bindings();
+  layout_ = std::make_unique<SceneLayout>(device, bindings);
 
+  const uint32_t count = static_cast<uint32_t>(bindings.size());
   VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR, 1},
                                   {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                  {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kBindingCount - 2}};
+                                  {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, count - 2}};
   VkDescriptorPoolCreateInfo pool{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   pool.maxSets = 1;
   pool.poolSizeCount = 3;
   pool.pPoolSizes = sizes;
   vk_check(vkCreateDescriptorPool(device, &pool, nullptr, &pool_), "vkCreateDescriptorPool");
+  VkDescriptorSetLayout set_layout = layout_->set();
   VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
   alloc.descriptorPool = pool_;
   alloc.descriptorSetCount = 1;
-  alloc.pSetLayouts = &set_layout_;
+  alloc.pSetLayouts = &set_layout;
   vk_check(vkAllocateDescriptorSets(device, &alloc, &set_), "vkAllocateDescriptorSets");
 
-  VkPushConstantRange push{SceneResources::kShaderStages, 0, sizeof(SampleRange)};
-  VkPipelineLayoutCreateInfo pipeline{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
-  pipeline.setLayoutCount = 1;
-  pipeline.pSetLayouts = &set_layout_;
-  pipeline.pushConstantRangeCount = 1;
-  pipeline.pPushConstantRanges = &push;
-  vk_check(vkCreatePipelineLayout(device, &pipeline, nullptr, &pipeline_layout_),
-           "vkCreatePipelineLayout");
-
-  // Write every binding.
   VkAccelerationStructureKHR tlas = structures_.top.handle();
   VkWriteDescriptorSetAccelerationStructureKHR as_write{
       VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET_ACCELERATION_STRUCTURE_KHR};
   as_write.accelerationStructureCount = 1;
   as_write.pAccelerationStructures = &tlas;
-  const GpuBuffer* buffers[kBindingCount] = {nullptr,     &accumulation_, &frame_,
-                                             &spheres_,   &materials_,    &lights_,
-                                             &positions_, &normals_,      &indices_,
-                                             &triangles_,   &ray_counts_,   &sphere_refs_,
-                                             &cells_,       &faces_,        &diagnostics_,
-                                             &emitters_,    &light_images_};
-  VkDescriptorBufferInfo infos[kBindingCount]{};
-  VkWriteDescriptorSet writes[kBindingCount]{};
-  for (uint32_t i = 0; i < kBindingCount; ++i) {
-    writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+  const GpuBuffer* buffers[kSceneBindingCount] = {
+      nullptr,     &accumulation_, &frame_,     &spheres_,     &materials_,   &lights_,
+      &positions_, &normals_,      &indices_,   &triangles_,   &ray_counts_,  &sphere_refs_,
+      &cells_,     &faces_,        &diagnostics_, &emitters_,  &light_images_};
+  std::vector<VkDescriptorBufferInfo> infos(count);
+  std::vector<VkWriteDescriptorSet> writes(count);
+  for (uint32_t i = 0; i < count; ++i) {
+    const uint32_t b = bindings[i];
+    writes[i] = {VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     writes[i].dstSet = set_;
-    writes[i].dstBinding = i;
+    writes[i].dstBinding = b;
     writes[i].descriptorCount = 1;
-    writes[i].descriptorType = bindings[i].descriptorType;
-    if (i == kScene) {
+    writes[i].descriptorType = SceneLayout::descriptor_type(b);
+    if (b == kSceneBinding) {
       writes[i].pNext = &as_write;
     } else {
-      infos[i] = {buffers[i]->handle(), 0, VK_WHOLE_SIZE};
+      infos[i] = {buffers[b]->handle(), 0, VK_WHOLE_SIZE};
       writes[i].pBufferInfo = &infos[i];
     }
   }
-  vkUpdateDescriptorSets(device, kBindingCount, writes, 0, nullptr);
+  vkUpdateDescriptorSets(device, count, writes.data(), 0, nullptr);
 }
 
 }  // namespace geodesic

@@ -1,31 +1,32 @@
 // Everything a scene needs on the device: its buffers, acceleration structures, the
-// accumulation buffer, and the one descriptor set both tracing back ends bind.
+// accumulation buffer, and the one descriptor set both tracing back ends bind. Only the
+// buffers its pipeline's features read are made and bound.
 #pragma once
+
+#include <memory>
 
 #include "render/acceleration.h"
 #include "render/frame_uniforms.h"
 #include "render/gpu_buffer.h"
 #include "render/packed_scene.h"
+#include "render/pipeline_features.h"
+#include "render/scene_layout.h"
 #include "scene/scene.h"
 
 namespace geodesic {
 
 class SceneResources {
  public:
-  // Every stage that reads the scene's descriptor set and push constants.
-  static constexpr VkShaderStageFlags kShaderStages =
-      VK_SHADER_STAGE_COMPUTE_BIT | VK_SHADER_STAGE_RAYGEN_BIT_KHR |
-      VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR | VK_SHADER_STAGE_INTERSECTION_BIT_KHR |
-      VK_SHADER_STAGE_MISS_BIT_KHR;
-
-  SceneResources(VulkanContext& ctx, const Scene& scene);
+  SceneResources(VulkanContext& ctx, const Scene& scene,
+                 PipelineVariant variant = PipelineVariant::Specialised);
   ~SceneResources();
   SceneResources(const SceneResources&) = delete;
   SceneResources& operator=(const SceneResources&) = delete;
 
-  VkDescriptorSetLayout set_layout() const { return set_layout_; }
   VkDescriptorSet descriptor_set() const { return set_; }
-  VkPipelineLayout pipeline_layout() const { return pipeline_layout_; }
+  VkPipelineLayout pipeline_layout() const { return layout_->pipeline(); }
+  // What the scene's pipeline must compile in (the device's primitive culling included).
+  const PipelineFeatures& features() const { return features_; }
   const FrameUniforms& uniforms() const { return uniforms_; }
   GeometryKind geometry() const { return geometry_; }
   uint32_t width() const { return uniforms_.width; }
@@ -53,16 +54,16 @@ class SceneResources {
   VulkanContext& ctx_;
   GeometryKind geometry_;
   PackedScene packed_;
+  PipelineFeatures features_;
   FrameUniforms uniforms_{};
   size_t capacity_ = 0;  // pixels the buffers hold
   SceneAccelerationStructures structures_;
   GpuBuffer frame_, accumulation_, spheres_, materials_, lights_, positions_, normals_,
       indices_, triangles_, ray_counts_, sphere_refs_, cells_, faces_, diagnostics_, emitters_,
       light_images_;
-  VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
+  std::unique_ptr<SceneLayout> layout_;
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
   VkDescriptorSet set_ = VK_NULL_HANDLE;
-  VkPipelineLayout pipeline_layout_ = VK_NULL_HANDLE;
 };
 
 }  // namespace geodesic

@@ -1,22 +1,17 @@
-// Loads compiled SPIR-V (built from shaders/ by glslang) into shader modules.
+// A VkShaderModule made from SPIR-V words (render/shader_compiler.h compiles them), destroyed
+// with its owner: pipelines keep what they need after creation.
 #pragma once
 
-#include <filesystem>
-#include <string>
+#include <cstdint>
+#include <span>
 
-#include "geometry/model.h"
 #include "render/vulkan_context.h"
 
 namespace geodesic {
 
-// The SPIR-V folder: $GEODESIC_SHADER_DIR if set, else the build tree's.
-std::filesystem::path shader_directory();
-
-// Owns a VkShaderModule loaded from shader_directory()/<entry>.<geometry>.spv: each entry
-// point is compiled once per model geometry.
 class ShaderModule {
  public:
-  ShaderModule(VkDevice device, const std::string& entry, GeometryKind geometry);
+  ShaderModule(VkDevice device, std::span<const uint32_t> spirv);
   ~ShaderModule();
   ShaderModule(const ShaderModule&) = delete;
   ShaderModule& operator=(const ShaderModule&) = delete;

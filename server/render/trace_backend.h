@@ -4,7 +4,9 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
+#include "render/pipeline_cache.h"
 #include "render/scene_resources.h"
 
 namespace geodesic {
@@ -15,6 +17,10 @@ class TraceBackend {
  public:
   virtual ~TraceBackend() = default;
   virtual const char* name() const = 0;
+  // Its pipeline (shared through the device's PipelineCache) and the shaders/ entry points it
+  // is made of.
+  virtual const CachedPipeline& pipeline() const = 0;
+  virtual std::vector<std::string> entries() const = 0;
   // Records a dispatch adding `range` samples to every pixel of its rows.
   virtual void record(VkCommandBuffer cmd, SampleRange range) = 0;
 };

@@ -1,5 +1,7 @@
 #include "render/vulkan_context.h"
 
+#include "render/pipeline_cache.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cstring>
@@ -196,6 +198,8 @@ VulkanContext::VulkanContext(const std::string& selector) {
   description_.float64 = features.features.shaderFloat64;
   description_.ray_tracing_pipeline =
       description_.ray_tracing_pipeline && pipeline.rayTracingPipeline;
+  description_.primitive_culling =
+      description_.ray_tracing_pipeline && pipeline.rayTraversalPrimitiveCulling;
 
   // Enable only what is needed, keeping the queried chain.
   VkPhysicalDeviceFeatures2 enabled = features;
@@ -238,6 +242,7 @@ VulkanContext::VulkanContext(const std::string& selector) {
   VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2,
                                     &pipeline_properties_};
   vkGetPhysicalDeviceProperties2(physical_device_, &props);
+  pipeline_cache_ = std::make_unique<PipelineCache>(device_, props.properties.pipelineCacheUUID);
 
   VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
   pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
@@ -250,6 +255,7 @@ VulkanContext::VulkanContext(const std::string& selector) {
 VulkanContext::~VulkanContext() {
   if (device_) {
     vkDeviceWaitIdle(device_);
+    pipeline_cache_.reset();
     vkDestroyFence(device_, fence_, nullptr);
     vkDestroyCommandPool(device_, command_pool_, nullptr);
     vkDestroyDevice(device_, nullptr);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -31,6 +32,7 @@ struct DeviceDescription {
   bool ray_tracing_pipeline = false;
   bool ray_query = false;
   bool float64 = false;  // shaderFloat64
+  bool primitive_culling = false;  // rayTraversalPrimitiveCulling: SKIP_AABBS / SKIP_TRIANGLES
   std::vector<std::string> missing;  // required extensions/features it lacks
 
   bool can_ray_trace() const { return missing.empty() && (ray_tracing_pipeline || ray_query); }
@@ -47,6 +49,8 @@ struct RayTracingFunctions {
   PFN_vkGetRayTracingShaderGroupHandlesKHR get_shader_group_handles = nullptr;
   PFN_vkCmdTraceRaysKHR cmd_trace_rays = nullptr;
 };
+
+class PipelineCache;
 
 class VulkanContext {
  public:
@@ -70,6 +74,9 @@ class VulkanContext {
   const VkPhysicalDeviceAccelerationStructurePropertiesKHR& acceleration_properties() const {
     return acceleration_properties_;
   }
+
+  // The pipelines built on this device (render/pipeline_cache.h).
+  PipelineCache& pipeline_cache() { return *pipeline_cache_; }
 
   uint32_t find_memory_type(uint32_t type_bits, VkMemoryPropertyFlags wanted) const;
 
@@ -97,6 +104,7 @@ class VulkanContext {
   VkPhysicalDeviceMemoryProperties memory_properties_{};
   VkPhysicalDeviceRayTracingPipelinePropertiesKHR pipeline_properties_{};
   VkPhysicalDeviceAccelerationStructurePropertiesKHR acceleration_properties_{};
+  std::unique_ptr<PipelineCache> pipeline_cache_;
 };
 
 }  // namespace geodesic

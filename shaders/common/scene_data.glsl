@@ -1,5 +1,7 @@
 // Descriptor layout and GPU structs shared by every entry point; mirrors
-// server/render/packed_scene.h and server/render/frame_uniforms.h (std430 / std140).
+// server/render/packed_scene.h and server/render/frame_uniforms.h (std430 / std140). A buffer
+// is declared only when the pipeline's features read it (server/render/pipeline_features.cpp
+// decides the same, binding by binding).
 #ifndef SCENE_DATA_GLSL
 #define SCENE_DATA_GLSL
 
@@ -93,22 +95,48 @@ layout(set = 0, binding = 2, std140) uniform Frame {
   float clampLuminance;  // 0: no clamp
   uint pad0;
 } frame;
-layout(set = 0, binding = 3, std430) readonly buffer Spheres { Sphere spheres[]; };
 layout(set = 0, binding = 4, std430) readonly buffer Materials { Material materials[]; };
-layout(set = 0, binding = 5, std430) readonly buffer Lights { PointLight lights[]; };
-layout(set = 0, binding = 6, std430) readonly buffer Positions { vec4 positions[]; };  // chart
-layout(set = 0, binding = 7, std430) readonly buffer Normals { vec4 normals[]; };      // E3
-layout(set = 0, binding = 8, std430) readonly buffer Indices { uint indices[]; };
-layout(set = 0, binding = 9, std430) readonly buffer Triangles { TriangleInfo triangles[]; };
 // Rays traced per pixel (camera, bounce and shadow segments), for rays/s figures.
 layout(set = 0, binding = 10, std430) buffer RayCounts { uint rayCounts[]; };
-layout(set = 0, binding = 11, std430) readonly buffer SphereRefs { SphereRef sphereRefs[]; };
-layout(set = 0, binding = 12, std430) readonly buffer Cells { Cell cells[]; };
-layout(set = 0, binding = 13, std430) readonly buffer CellFaces { CellFace cellFaces[]; };
 // Samples dropped because they were NaN or infinite (tests require none).
 layout(set = 0, binding = 14, std430) buffer Diagnostics { uint nonFiniteSamples; };
+#if defined(HAS_SPHERES)
+layout(set = 0, binding = 3, std430) readonly buffer Spheres { Sphere spheres[]; };
+layout(set = 0, binding = 11, std430) readonly buffer SphereRefs { SphereRef sphereRefs[]; };
+#endif
+#if defined(HAS_TRIANGLES)
+layout(set = 0, binding = 6, std430) readonly buffer Positions { vec4 positions[]; };  // chart
+layout(set = 0, binding = 8, std430) readonly buffer Indices { uint indices[]; };
+layout(set = 0, binding = 9, std430) readonly buffer Triangles { TriangleInfo triangles[]; };
+#endif
+#if defined(HAS_SMOOTH_NORMALS)
+layout(set = 0, binding = 7, std430) readonly buffer Normals { vec4 normals[]; };  // E3
+#endif
+#if defined(LIGHTING_PAPER) && defined(HAS_POINT_LIGHTS)
+layout(set = 0, binding = 5, std430) readonly buffer Lights { PointLight lights[]; };
+#endif
+#if defined(CELL_CROSSING) || defined(MULTIPLE_CHARTS)
+layout(set = 0, binding = 12, std430) readonly buffer Cells { Cell cells[]; };
+#endif
+#if defined(CELL_CROSSING)
+layout(set = 0, binding = 13, std430) readonly buffer CellFaces { CellFace cellFaces[]; };
+#endif
+#if defined(LIGHT_SAMPLING)
 layout(set = 0, binding = 15, std430) readonly buffer Emitters { Emitter emitters[]; };
 layout(set = 0, binding = 16, std430) readonly buffer LightImages { mat4 lightImages[]; };
+#endif
+
+// Loop bounds a specialised pipeline bakes in as constants; the all-features pipeline reads
+// them from the frame.
+#if !defined(POINT_LIGHT_COUNT)
+#define POINT_LIGHT_COUNT frame.lightCount
+#endif
+#if !defined(EMITTER_COUNT)
+#define EMITTER_COUNT frame.emitterCount
+#endif
+#if !defined(MAX_CROSSINGS)
+#define MAX_CROSSINGS frame.maxCrossings
+#endif
 
 // Which samples this dispatch adds, [sampleStart, sampleStart + sampleCount), to which rows:
 // the dispatch's y runs over [rowOffset, rowOffset + rowCount).

@@ -2,6 +2,9 @@
 // Entry point 1: a compute kernel tracing with ray queries (fastest on lavapipe).
 #extension GL_EXT_ray_query : require
 #extension GL_GOOGLE_include_directive : require
+#if defined(CULL_PRIMITIVES)
+#extension GL_EXT_ray_flags_primitive_culling : require
+#endif
 
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
@@ -13,14 +16,26 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool anyHit) {
   ++tracedRays;
   rayQueryEXT q;
-  uint flags = gl_RayFlagsOpaqueEXT | (anyHit ? gl_RayFlagsTerminateOnFirstHitEXT : 0u);
-  rayQueryInitializeEXT(q, uScene, flags, 1u << cell, o, 0.0, d, sMax);
+  uint flags = CELL_OPACITY_FLAGS | (anyHit ? gl_RayFlagsTerminateOnFirstHitEXT : 0u) |
+               PRIMITIVE_CULLING_FLAGS;
+  rayQueryInitializeEXT(q, uScene, flags, cellMask(cell), o, 0.0, d, sMax);
   ChartHit best = noChartHit();
   while (rayQueryProceedEXT(q)) {
+    uint candidate = rayQueryGetIntersectionInstanceCustomIndexEXT(q, false) +
+                     rayQueryGetIntersectionPrimitiveIndexEXT(q, false);
+#if defined(SHARED_CELL_MASKS) && defined(HAS_TRIANGLES)
+    if (rayQueryGetIntersectionTypeEXT(q, false) == gl_RayQueryCandidateIntersectionTriangleEXT) {
+      if (triangles[candidate].cell == cell) rayQueryConfirmIntersectionEXT(q);
+      continue;
+    }
+#endif
+#if defined(HAS_SPHERES)
     if (rayQueryGetIntersectionTypeEXT(q, false) != gl_RayQueryCandidateIntersectionAABBEXT)
       continue;
-    uint refIndex = rayQueryGetIntersectionInstanceCustomIndexEXT(q, false) +
-                    rayQueryGetIntersectionPrimitiveIndexEXT(q, false);
+    uint refIndex = candidate;
+#if defined(SHARED_CELL_MASKS)
+    if (sphereRefs[refIndex].cell != cell) continue;
+#endif
     bool committed = rayQueryGetIntersectionTypeEXT(q, true) != gl_RayQueryCommittedIntersectionNoneEXT;
     float sLimit = committed ? rayQueryGetIntersectionTEXT(q, true) : sMax;
     float s, t;
@@ -28,15 +43,18 @@ ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool 
       rayQueryGenerateIntersectionEXT(q, s);
       best = ChartHit(2u, sphereRefs[refIndex].sphere, s, t, vec2(0.0));
     }
+#endif
   }
   uint type = rayQueryGetIntersectionTypeEXT(q, true);
   if (type == gl_RayQueryCommittedIntersectionNoneEXT) return noChartHit();
+#if defined(HAS_TRIANGLES)
   if (type == gl_RayQueryCommittedIntersectionTriangleEXT)
     return ChartHit(1u,
                     rayQueryGetIntersectionInstanceCustomIndexEXT(q, true) +
                         rayQueryGetIntersectionPrimitiveIndexEXT(q, true),
                     rayQueryGetIntersectionTEXT(q, true), FAR,
                     rayQueryGetIntersectionBarycentricsEXT(q, true));
+#endif
   return best;  // the last generated sphere hit is the committed one
 }
 

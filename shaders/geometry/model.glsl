@@ -13,9 +13,11 @@
 #include "geometry/euclidean.glsl"
 #endif
 
+#if defined(GEOMETRY_SPHERICAL)
 // Within this (intrinsic) distance of S3's antipode a direction is round-off: every geodesic
 // leads there.
 const float ANTIPODE_TOLERANCE = 64.0 * 1.1920929e-7;
+#endif
 
 vec4 originPoint() { return vec4(0.0, 0.0, 0.0, 1.0); }
 
@@ -30,9 +32,10 @@ vec4 normalizeTangent(vec4 p, vec4 v) {
 // the antipode.
 vec4 geodesicDirection(vec4 from, vec4 to) {
   vec4 u = tangentPart(from, to - from);  // |u| = sin d in S3
-  if (GEOMETRY_CURVATURE > 0.0 && dot(from, to) < 0.0 &&
-      dot(u, u) <= ANTIPODE_TOLERANCE * ANTIPODE_TOLERANCE)
+#if defined(GEOMETRY_SPHERICAL)
+  if (dot(from, to) < 0.0 && dot(u, u) <= ANTIPODE_TOLERANCE * ANTIPODE_TOLERANCE)
     return vec4(0.0);
+#endif
   return normalizeTangent(from, u);
 }
 
@@ -42,6 +45,15 @@ mat4 translationFrom(vec4 q) { return translationTo(vec4(-q.xyz, q.w)); }
 // of the chart: the plane is the form-orthogonal complement of (normal, -K delta).
 vec4 chartPlaneNormal(vec4 q, vec3 normal, float delta) {
   return normalizeTangent(q, vec4(normal, -GEOMETRY_CURVATURE * delta));
+}
+
+// The reflection in the geodesic plane {X : plane.xyz . chart(X) = plane.w} of the chart
+// (unit normal), applied to a point or a tangent: X - 2 <X, m> m / <m, m> with m = (N, -K delta),
+// which is x - 2 (N.x - delta) N in E3. Twin of reflection_in_chart_plane (model.h).
+vec4 reflectInChartPlane(vec4 x, vec4 plane) {
+  float offset = dot(plane.xyz, x.xyz) - plane.w * x.w;
+  float norm2 = 1.0 + GEOMETRY_CURVATURE * plane.w * plane.w;
+  return x - (2.0 * offset / norm2) * vec4(plane.xyz, -GEOMETRY_CURVATURE * plane.w);
 }
 
 // Outward unit normal at q of the geodesic sphere centred at `center`.

@@ -5,6 +5,24 @@
 
 const float FAR = 1e30;
 
+// Traversal skips the primitive type a scene lacks, where the device allows it.
+#if defined(CULL_PRIMITIVES) && !defined(HAS_SPHERES)
+#define PRIMITIVE_CULLING_FLAGS gl_RayFlagsSkipAABBEXT
+#elif defined(CULL_PRIMITIVES) && !defined(HAS_TRIANGLES)
+#define PRIMITIVE_CULLING_FLAGS gl_RayFlagsSkipTrianglesEXT
+#else
+#define PRIMITIVE_CULLING_FLAGS 0u
+#endif
+
+// Past eight cells, cells share ray-mask bits (cell % 8) and every candidate's cell is
+// checked, so triangles cannot be accepted unseen.
+#if defined(SHARED_CELL_MASKS)
+#define CELL_OPACITY_FLAGS gl_RayFlagsNoOpaqueEXT
+#else
+#define CELL_OPACITY_FLAGS gl_RayFlagsOpaqueEXT
+#endif
+uint cellMask(uint cell) { return 1u << (cell % 8u); }
+
 struct GeodesicRay {
   vec4 p;            // model point
   vec4 v;            // unit tangent at p
@@ -23,10 +41,10 @@ struct ChartHit {
 
 ChartHit noChartHit() { return ChartHit(0u, 0u, FAR, FAR, vec2(0.0)); }
 
-// Model -> cell frame. Only S3's atlas changes charts between cells; E3 and H3 (with or without
-// a quotient) have one cell charted about the origin, so the identity compiles away there.
+// Model -> cell frame. Only S3's atlas changes charts between cells; other spaces have one
+// cell charted about the origin, so the identity compiles away there.
 mat4 cellChartIsometry(uint cell) {
-#if defined(GEOMETRY_SPHERICAL)
+#if defined(MULTIPLE_CHARTS)
   return cells[cell].chartIsometry;
 #else
   return mat4(1.0);

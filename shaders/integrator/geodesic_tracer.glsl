@@ -1,6 +1,8 @@
 // The paper's algorithm 1, generalised to cells: trace a geodesic through the current cell's
 // chart; when it reaches a face of the cell without hitting anything, carry it across (the
-// face's pairing isometry, or a change of chart) and go on, up to frame.maxCrossings times.
+// face's pairing isometry, or a change of chart) and go on, up to MAX_CROSSINGS times. A space
+// without faces (CELL_CROSSING undefined) traces one chart segment. The crossing code is the
+// pairing kind's only (PAIRING_*, server/render/pipeline_features.h).
 // Needs ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool any)
 // from the entry point.
 #ifndef GEODESIC_TRACER_GLSL
@@ -26,6 +28,7 @@ ChartLine chartLineOf(GeodesicRay ray) {
   return line;
 }
 
+#if defined(CELL_CROSSING)
 // Where the chart line leaves its convex cell: the smallest chart parameter over the faces it
 // moves towards (NO_FACE and FAR for a cell without faces).
 uint exitFace(GeodesicRay ray, ChartLine line, out float sExit) {
@@ -51,8 +54,17 @@ uint exitFace(GeodesicRay ray, ChartLine line, out float sExit) {
 // the face's pairing and re-normalised onto the model (float isometries drift otherwise).
 GeodesicRay crossFace(GeodesicRay ray, uint face, float t) {
   CellFace f = cellFaces[face];
-  vec4 q = f.pairing * geodesicPoint(ray.p, ray.v, t);
-  vec4 u = f.pairing * geodesicTangent(ray.p, ray.v, t);
+  vec4 q = geodesicPoint(ray.p, ray.v, t);
+  vec4 u = geodesicTangent(ray.p, ray.v, t);
+#if defined(PAIRING_TRANSLATION)
+  q.xyz += f.pairing[3].xyz;  // E3: the tangent is unchanged, the point stays at w = 1
+#elif defined(PAIRING_REFLECTION)
+  q = reflectInChartPlane(q, f.plane);  // exact: from the face's plane, not a float matrix
+  u = reflectInChartPlane(u, f.plane);
+#elif defined(PAIRING_ISOMETRY)
+  q = f.pairing * q;
+  u = f.pairing * u;
+#endif  // PAIRING_CHART_CHANGE: the point stays, only its chart changes
   GeodesicRay next;
   next.p = normalizePoint(q);
   next.v = normalizeTangent(next.p, u);
@@ -60,13 +72,20 @@ GeodesicRay crossFace(GeodesicRay ray, uint face, float t) {
   next.enteredFace = f.partner;
   return next;
 }
+#endif
 
 // Follows the geodesic until it hits something within arc length maxDistance. On a hit, `ray`
 // is the segment that hit (its cell and start) and `travelled` the arc length before it.
 bool followGeodesic(inout GeodesicRay ray, float maxDistance, bool anyHit, out ChartHit hit,
                     out float travelled) {
   travelled = 0.0;
-  for (uint crossing = 0u; crossing <= frame.maxCrossings; ++crossing) {
+#if !defined(CELL_CROSSING)
+  ChartLine whole = chartLineOf(ray);
+  float sWhole = maxDistance >= FAR ? FAR : chartParameter(whole.p, whole.v, maxDistance);
+  hit = traceChart(whole.o, whole.d, sWhole, ray.cell, whole.p, whole.v, anyHit);
+  return hit.kind != 0u;
+#else
+  for (uint crossing = 0u; crossing <= MAX_CROSSINGS; ++crossing) {
     ChartLine line = chartLineOf(ray);
     float sExit;
     uint face = exitFace(ray, line, sExit);
@@ -81,6 +100,14 @@ bool followGeodesic(inout GeodesicRay ray, float maxDistance, bool anyHit, out C
     ray = crossFace(ray, face, tExit);
   }
   return false;
+#endif
+}
+
+// True when something lies on the geodesic within `distance` (a shadow ray).
+bool occluded(GeodesicRay ray, float distance) {
+  ChartHit hit;
+  float travelled;
+  return followGeodesic(ray, distance, true, hit, travelled);
 }
 
 #endif

@@ -16,8 +16,10 @@ vec3 paperRadiance(GeodesicRay ray, inout uint rng) {
     LocalFrame local = localFrameAt(s.position);
     vec3 n = toLocal(local, s.normal), ng = toLocal(local, s.geometricNormal);
     vec3 incoming = toLocal(local, s.incoming);
-    radiance += throughput * (m.emission.rgb + m.ambient.rgb * frame.ambientLight.rgb +
-                              directIllumination(s, local, n, ng, -incoming, m));
+    radiance += throughput * (m.emission.rgb + m.ambient.rgb * frame.ambientLight.rgb);
+#if defined(HAS_POINT_LIGHTS)
+    radiance += throughput * directIllumination(s, local, n, ng, -incoming, m);
+#endif
     if (depth == frame.maxDepth) break;
     vec3 direction, weight;
     if (!sampleBounce(n, ng, incoming, m, rng, direction, weight)) break;

@@ -13,7 +13,13 @@ vec3 pixelSample(uvec2 pixel, inout uint rng) {
   ray.v = frame.cameraPose * vec4(dir, 0.0);
   ray.cell = frame.cameraCell;
   ray.enteredFace = ~0u;
+#if defined(LIGHTING_PAPER) && defined(LIGHTING_PHYSICAL)
   return frame.lighting == 0u ? paperRadiance(ray, rng) : physicalRadiance(ray, rng);
+#elif defined(LIGHTING_PAPER)
+  return paperRadiance(ray, rng);
+#else
+  return physicalRadiance(ray, rng);
+#endif
 }
 
 // Adds push.sampleCount samples to the pixel's running sums (rgb) and counts (a), kept in two

@@ -7,6 +7,7 @@
 #ifndef PHYSICAL_INTEGRATOR_GLSL
 #define PHYSICAL_INTEGRATOR_GLSL
 
+#if defined(LIGHT_SAMPLING)
 vec4 rng4(inout uint rng) { return vec4(rngNext(rng), rngNext(rng), rngNext(rng), rngNext(rng)); }
 
 // Direct light at s by one light sample: f cos L / pdf, weighted against BSDF sampling.
@@ -27,13 +28,18 @@ vec3 nextEventEstimate(Surface s, LocalFrame local, vec3 n, vec3 wo, Material m,
   float weight = ls.point || last ? 1.0 : powerHeuristic(ls.pdf, bsdfPdf(m, n, wo, wi));
   return f * cosI * ls.radiance * (weight / ls.pdf);
 }
+#endif
 
 vec3 physicalRadiance(GeodesicRay ray, inout uint rng) {
   vec3 radiance = vec3(0.0), throughput = vec3(1.0);
   bool misWeighted = false;  // the last bounce was a smooth BSDF sample light sampling shares
   float bsdfDensity = 0.0;
   vec4 from = ray.p, heading = ray.v;  // the last vertex and the direction that left it
-  bool nee = frame.lightSampling == 0u && frame.emitterCount > 0u;
+#if defined(LIGHT_SAMPLING)
+  bool nee = frame.lightSampling == 0u && EMITTER_COUNT > 0u;
+#else
+  const bool nee = false;  // BSDF sampling alone: emission is found by hitting it
+#endif
   for (uint depth = 0u; depth <= frame.maxDepth + 1u; ++depth) {
     ChartHit hit;
     float travelled;
@@ -42,11 +48,13 @@ vec3 physicalRadiance(GeodesicRay ray, inout uint rng) {
     Material m = materials[s.material];
     if (max(m.emission.r, max(m.emission.g, m.emission.b)) > 0.0) {
       float weight = 1.0;
+#if defined(LIGHT_SAMPLING)
       if (misWeighted && s.emitter != ~0u) {
         float cosLight = abs(modelInner(s.incoming, s.geometricNormal));
         weight = powerHeuristic(bsdfDensity,
                                 lightPdf(s.emitter, from, heading, travelled + s.t, cosLight));
       }
+#endif
       radiance += throughput * m.emission.rgb * weight;
     }
     if (depth > frame.maxDepth) break;  // past the last bounce only emission counts
@@ -54,8 +62,10 @@ vec3 physicalRadiance(GeodesicRay ray, inout uint rng) {
     vec3 n = toLocal(local, s.normal);
     vec3 wo = -toLocal(local, s.incoming);
     bool last = depth == frame.maxDepth;
+#if defined(LIGHT_SAMPLING)
     if (nee && hasSmoothLobe(m))
       radiance += throughput * nextEventEstimate(s, local, n, wo, m, last, rng);
+#endif
     BsdfSample bs;
     if (!sampleBsdf(m, n, wo, s.frontFace, vec3(rngNext(rng), rngNext(rng), rngNext(rng)), bs))
       break;

@@ -5,18 +5,33 @@
 // round (distance 2 pi - d), each weighted by how much light it can bring, up to
 // render.light_cutoff (server/render/emitters.h). A point light at distance d gives irradiance I cos / A(d); an area light
 // is sampled by solid angle (spheres: the cone they subtend) or by area with the Jacobian
-// A(d) / cos (triangles), A(d) = d^2, sinh^2 d or sin^2 d.
+// A(d) / cos (triangles), A(d) = d^2, sinh^2 d or sin^2 d. Compiled only with LIGHT_SAMPLING,
+// and each kind of emitter only when the scene has one (HAS_POINT_LIGHTS, HAS_SPHERE_EMITTERS,
+// HAS_TRIANGLE_EMITTERS).
 #ifndef EMITTERS_GLSL
 #define EMITTERS_GLSL
+#if defined(LIGHT_SAMPLING)
 
 const uint EMITTER_POINT = 0u;
 const uint EMITTER_SPHERE = 1u;
 const uint EMITTER_TRIANGLE = 2u;
 const float FULL_TURN = 6.28318530717958647692;
 
+// The direction to a point light's image (the selection weight needs its side of the surface).
+vec4 towardPointLight(Emitter e, vec4 x, vec4 c) {
+#if defined(HAS_POINT_LIGHTS)
+  if (e.kind == EMITTER_POINT) return geodesicDirection(x, c);
+#endif
+  return vec4(0.0);
+}
+
 // Branch b of the geodesics from a point at distance d: 0 the direct one, 1 the long way
 // round (S3 only).
-uint branchCount() { return GEOMETRY_CURVATURE > 0.0 ? 2u : 1u; }
+#if defined(GEOMETRY_SPHERICAL)
+uint branchCount() { return 2u; }
+#else
+uint branchCount() { return 1u; }
+#endif
 float branchDistance(float d, uint branch) { return branch == 0u ? d : FULL_TURN - d; }
 
 // How much the geodesic of branch b to the emitter's image at distance d (direction
@@ -25,10 +40,15 @@ float branchDistance(float d, uint branch) { return branch == 0u ? d : FULL_TURN
 // behind the surface (geometric normal ng, zero to skip the test) brings nothing.
 float branchWeight(Emitter e, float d, uint branch, vec4 toward, vec4 ng) {
   if (branch == 1u && frame.lightCutoff <= PI) return 0.0;
+#if defined(HAS_SPHERE_EMITTERS)
   if (e.kind == EMITTER_SPHERE && d <= e.radius) return branch == 0u ? 4.0 * PI : 0.0;
+#endif
   float spread = max(sphereAreaFactor(branchDistance(d, branch)), 1e-12);
-  if (e.kind != EMITTER_POINT) return min(4.0 * PI, e.radiance.w / spread);
-  return (branch == 0u ? 1.0 : -1.0) * modelInner(toward, ng) < 0.0 ? 0.0 : 1.0 / spread;
+#if defined(HAS_POINT_LIGHTS)
+  if (e.kind == EMITTER_POINT)
+    return (branch == 0u ? 1.0 : -1.0) * modelInner(toward, ng) < 0.0 ? 0.0 : 1.0 / spread;
+#endif
+  return min(4.0 * PI, e.radiance.w / spread);
 }
 
 // The sum of branchWeight over the emitter's images and branches, seen from x.
@@ -37,7 +57,7 @@ float totalBranchWeight(Emitter e, vec4 x, vec4 ng) {
   for (uint j = 0u; j < e.imageCount; ++j) {
     vec4 c = lightImages[e.imageBegin + j] * e.center;
     float d = geodesicDistance(x, c);
-    vec4 toward = e.kind == EMITTER_POINT ? geodesicDirection(x, c) : vec4(0.0);
+    vec4 toward = towardPointLight(e, x, c);
     for (uint b = 0u; b < branchCount(); ++b) total += branchWeight(e, d, b, toward, ng);
   }
   return total;
@@ -52,7 +72,7 @@ float sphereConeCos(Emitter e, float d) {
 
 // The emitter whose cdf range holds u (binary search).
 uint chooseEmitter(float u) {
-  uint lo = 0u, hi = frame.emitterCount - 1u;
+  uint lo = 0u, hi = EMITTER_COUNT - 1u;
   while (lo < hi) {
     uint mid = (lo + hi) / 2u;
     if (u < emitters[mid].cdf) hi = mid;
@@ -85,7 +105,7 @@ struct LightSample {
 // when none applies.
 bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) {
   ls = LightSample(vec4(0.0), 0.0, vec3(0.0), 0.0, false);
-  if (frame.emitterCount == 0u) return false;
+  if (EMITTER_COUNT == 0u) return false;
   uint index = chooseEmitter(u.x);
   Emitter e = emitters[index];
   float total = totalBranchWeight(e, x, ng);
@@ -97,7 +117,7 @@ bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) 
   for (uint j = 0u; j < e.imageCount; ++j) {
     vec4 cj = lightImages[e.imageBegin + j] * e.center;
     float dj = geodesicDistance(x, cj);
-    vec4 toward = e.kind == EMITTER_POINT ? geodesicDirection(x, cj) : vec4(0.0);
+    vec4 toward = towardPointLight(e, x, cj);
     for (uint b = 0u; b < branchCount(); ++b) {
       float wb = branchWeight(e, dj, b, toward, ng);
       if (wb <= 0.0 || target < 0.0) continue;
@@ -116,6 +136,7 @@ bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) 
   vec4 toward = geodesicDirection(x, c);
   if (dot(toward, toward) == 0.0 && e.kind != EMITTER_SPHERE) return false;
   ls.pdf = e.pmf * choice;
+#if defined(HAS_POINT_LIGHTS)
   if (e.kind == EMITTER_POINT) {
     ls.direction = sign * toward;
     ls.distance = branchDistance(d, branch);
@@ -123,6 +144,8 @@ bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) 
     ls.point = true;
     return true;
   }
+#endif
+#if defined(HAS_SPHERE_EMITTERS)
   if (e.kind == EMITTER_SPHERE) {
     // Directions towards the sphere: the cone it subtends.
     float cosMax = sphereConeCos(e, d);
@@ -135,6 +158,8 @@ bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) 
     ls.pdf *= 1.0 / (2.0 * PI * (1.0 - cosMax));
     return true;
   }
+#endif
+#if defined(HAS_TRIANGLE_EMITTERS)
   // Triangle: a point by area, in the chart around its centroid.
   vec2 bary = sampleUniformTriangle(u.zw);
   vec3 xc = e.corner.xyz + bary.x * e.edge1.xyz + bary.y * e.edge2.xyz;
@@ -153,17 +178,22 @@ bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) 
   ls.radiance = e.radiance.rgb;
   ls.pdf *= 2.0 / triangleAreaJacobian(e, xc) * sphereAreaFactor(ls.distance) / cosLight;
   return true;
+#else
+  return false;
+#endif
 }
 
 // The density with which sampleLight at x would have produced the direction `direction` that
 // reached emitter `index` after arc length t, arriving at cosine cosLight to its surface.
 float lightPdf(uint index, vec4 x, vec4 direction, float t, float cosLight) {
   Emitter e = emitters[index];
-  if (e.kind == EMITTER_POINT) return 0.0;
+#if defined(HAS_POINT_LIGHTS)
+  if (e.kind == EMITTER_POINT) return 0.0;  // no direction finds a point
+#endif
   float total = totalBranchWeight(e, x, vec4(0.0));
   if (total <= 0.0) return 0.0;
   vec4 y = normalizePoint(geodesicPoint(x, direction, t));  // the hit point, in x's copy
-  uint branch = GEOMETRY_CURVATURE > 0.0 && t > PI ? 1u : 0u;
+  uint branch = branchCount() > 1u && t > PI ? 1u : 0u;
   // The image the geodesic met: the one whose surface passes closest to y.
   uint image = 0u;
   float best = FAR;
@@ -183,13 +213,20 @@ float lightPdf(uint index, vec4 x, vec4 direction, float t, float cosLight) {
   float d = geodesicDistance(x, g * e.center);
   float choice = branchWeight(e, d, branch, vec4(0.0), vec4(0.0)) / total;
   if (choice <= 0.0) return 0.0;
+#if defined(HAS_SPHERE_EMITTERS)
   if (e.kind == EMITTER_SPHERE) {
     float cosMax = sphereConeCos(e, d);
     return e.pmf * choice / (2.0 * PI * (1.0 - cosMax));
   }
+#endif
+#if defined(HAS_TRIANGLE_EMITTERS)
   vec3 xc = chartPoint(translationFrom(e.center) * (inverseIsometry(g) * y));
   return e.pmf * choice * 2.0 / triangleAreaJacobian(e, xc) * sphereAreaFactor(t) /
          max(cosLight, 1e-7);
+#else
+  return 0.0;
+#endif
 }
 
+#endif  // LIGHT_SAMPLING
 #endif

@@ -2,12 +2,7 @@
 // the 0/1 shadow factor; the shadow ray follows the geodesic to the light through the cells.
 #ifndef POINT_LIGHT_GLSL
 #define POINT_LIGHT_GLSL
-
-bool occluded(GeodesicRay ray, float distance) {
-  ChartHit hit;
-  float travelled;
-  return followGeodesic(ray, distance, true, hit, travelled);
-}
+#if defined(HAS_POINT_LIGHTS)
 
 // Diffuse and Phong specular terms of eq. 2.2, summed over visible point lights; n, ng and wo
 // are in the local frame at the origin.
@@ -15,7 +10,7 @@ vec3 directIllumination(Surface s, LocalFrame frameAtHit, vec3 n, vec3 ng, vec3 
   vec3 sum = vec3(0.0);
   if (max(luminance(m.diffuse.rgb), luminance(m.specular.rgb)) <= 0.0) return sum;
   vec4 origin = offsetFromSurface(s.position, s.geometricNormal);
-  for (uint i = 0u; i < frame.lightCount; ++i) {
+  for (uint i = 0u; i < POINT_LIGHT_COUNT; ++i) {
     vec4 lightPosition = lights[i].position;
     vec4 towards = geodesicDirection(s.position, lightPosition);
     if (dot(towards, towards) == 0.0) continue;  // on the light, or its antipode in S3
@@ -30,5 +25,7 @@ vec3 directIllumination(Surface s, LocalFrame frameAtHit, vec3 n, vec3 ng, vec3 
   }
   return sum;
 }
+
+#endif
 
 #endif

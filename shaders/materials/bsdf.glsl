@@ -67,6 +67,7 @@ bool sampleBsdf(Material m, vec3 n, vec3 wo, bool entering, vec3 u, out BsdfSamp
     s.weight = m.mirror.rgb / p.mirror;
     return true;
   }
+#if defined(HAS_TRANSMISSION)
   if (p.transmission <= 0.0) return false;
   // Dielectric: reflect with the Fresnel probability F, else refract; F cancels in the weight.
   float eta = entering ? m.transmission.w : 1.0 / m.transmission.w;
@@ -82,6 +83,9 @@ bool sampleBsdf(Material m, vec3 n, vec3 wo, bool entering, vec3 u, out BsdfSamp
   s.weight /= eta * eta;
   s.transmitted = true;
   return true;
+#else
+  return false;
+#endif
 }
 
 #endif

@@ -3,6 +3,7 @@
 // the acceleration structure orders hits by.
 #ifndef SPHERE_CANDIDATE_GLSL
 #define SPHERE_CANDIDATE_GLSL
+#if defined(HAS_SPHERES)
 
 // (p, v): the ray in the cell's frame. On success s in [sMin, sMax] and t is the arc length.
 bool sphereCandidate(SphereRef ref, vec4 p, vec4 v, float sMin, float sMax, out float s,
@@ -15,5 +16,7 @@ bool sphereCandidate(SphereRef ref, vec4 p, vec4 v, float sMin, float sMax, out 
   s = chartParameter(p, v, t);
   return s >= sMin && s <= sMax;
 }
+
+#endif
 
 #endif

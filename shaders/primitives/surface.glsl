@@ -42,6 +42,7 @@ Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
   Surface s;
   s.hit = 1u;
   s.cell = ray.cell;
+#if defined(HAS_SPHERES)
   if (hit.kind == 2u) {
     Sphere sphere = spheres[hit.index];
     s.position = normalizePoint(geodesicPoint(ray.p, ray.v, hit.t));
@@ -53,6 +54,8 @@ Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
     s.t = hit.t;
     return facing(s);
   }
+#endif
+#if defined(HAS_TRIANGLES)
   // Triangle: exact in the cell's chart (geodesic planes are flat there).
   uint i0 = indices[3u * hit.index], i1 = indices[3u * hit.index + 1u],
        i2 = indices[3u * hit.index + 2u];
@@ -66,10 +69,12 @@ Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
   s.geometricNormal = toModel * chartPlaneNormal(qCell, planeNormal, dot(planeNormal, a));
   s.normal = s.geometricNormal;
   TriangleInfo info = triangles[hit.index];
+#if defined(HAS_SMOOTH_NORMALS)
   if (info.smoothNormals != 0u) {  // E3 meshes only: model tangents per vertex
     vec4 n = w * normals[i0] + hit.barycentrics.x * normals[i1] + hit.barycentrics.y * normals[i2];
     if (dot(n, n) > 0.0) s.normal = normalizeTangent(s.position, n);
   }
+#endif
   mat4 P = cellChartIsometry(ray.cell);
   float t = distanceFromChartParameter(P * ray.p, P * ray.v, hit.s);
   s.incoming = geodesicTangent(ray.p, ray.v, t);
@@ -77,6 +82,9 @@ Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
   s.emitter = info.emitter;
   s.t = t;
   return facing(s);
+#else
+  return noSurface();  // unreachable: without triangles every hit is a sphere's
+#endif
 }
 
 #endif

@@ -53,6 +53,7 @@ struct ProbeResult {
   vec4 cosineSample;       // sampleCosineHemisphere(normal, uv)
   uvec4 hashes;            // pcgHash(rng.w), rngSeed(rng.xyz), the state after the draws
   vec4 draws;              // four successive rngNext from that seed
+  vec4 reflected;          // reflectInChartPlane(p, plane)
 };
 
 layout(std430, binding = 0) readonly buffer Cases { ProbeCase cases[]; };
@@ -86,6 +87,7 @@ void main() {
   r.lifted = liftChart(c.chart.xyz);
   r.chartVelocity = vec4(chartDirection(p, v), 0.0);
   r.offset = offsetFromSurface(p, v);
+  r.reflected = reflectInChartPlane(p, c.plane);
 
   vec3 tb, bb;
   orthonormalBasis(c.normal.xyz, tb, bb);

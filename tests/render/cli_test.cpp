@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -51,6 +52,23 @@ TEST(Cli, RendersThePngItWasAskedForAndReportsThroughput) {
   std::filesystem::remove(out);
 }
 
+TEST(Cli, DumpShadersWritesTheScenesGlslSpirvAndFeatures) {
+  const auto dir = temp_file("-dump");
+  std::filesystem::remove_all(dir);
+  const CliRun r = run_cli("render " + source_path("scenes/torus-cornell.json").string() + " -o " +
+                           temp_file(".png").string() + " --spp 1 --width 16 --height 16" +
+                           " --backend ray-query --dump-shaders " + dir.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("pipeline: euclidean translation"), std::string::npos) << r.output;
+  for (const char* file : {"features.txt", "ray_query.comp.glsl", "ray_query.comp.spv"})
+    EXPECT_GT(std::filesystem::file_size(dir / file), 100u) << file;
+  std::ifstream features(dir / "features.txt");
+  const std::string text{std::istreambuf_iterator<char>(features), {}};
+  EXPECT_NE(text.find("#define PAIRING_TRANSLATION"), std::string::npos) << text;
+  std::filesystem::remove_all(dir);
+  std::filesystem::remove(temp_file(".png"));
+}
+
 TEST(Cli, ExrKeepsLinearRadianceAboveOne) {
   const auto out = temp_file(".exr");
   const CliRun r = run_cli("render " + source_path("scenes/furnace.json").string() + " -o " + out.string() +
@@ -75,6 +93,7 @@ TEST(Cli, BadInputFailsWithAMessageNamingTheProblem) {
       {cornell + " -o x.png --time 2 --target-error 0.1", "--time and --target-error: give one"},
       {cornell + " -o x.png --target-error 0", target + "\"0\""},
       {cornell + " -o x.png --lighting phong", "--lighting: must be \"physical\" or \"paper\""},
+      {cornell + " -o x.png --pipeline fast", "--pipeline: must be \"specialised\" or \"all-features\""},
       {cornell + " -o x.png --target-error 1.5", target + "\"1.5\""},
       {cornell + " -o x.png --target-error 5%", target + "\"5%\""},
       {cornell + " -o x.png --target-error", "--target-error: needs a value"},

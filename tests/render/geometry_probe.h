@@ -49,15 +49,15 @@ struct ProbeResult {
   F4 plane_normal, sphere_normal, normalized_point, normalized_tangent, chart_of_point, lifted,
       chart_velocity, offset, basis_tangent, basis_bitangent, cosine_sample;
   std::array<uint32_t, 4> hashes;
-  F4 draws;
+  F4 draws, reflected;
 };
-static_assert(sizeof(ProbeResult) == 6 * 16 + 3 * 64 + 11 * 16 + 2 * 16);
+static_assert(sizeof(ProbeResult) == 6 * 16 + 3 * 64 + 11 * 16 + 3 * 16);
 
 constexpr double kUnitRoundoff = FLT_EPSILON / 2;
 constexpr float kFar = 1e30f;
 
 inline std::vector<ProbeResult> run_probe(GeometryKind k, const std::vector<ProbeCase>& cases) {
-  ProbeRunner runner(device(), "geometry_probe.comp", k);
+  ProbeRunner runner(device(), "probes/geometry_probe.comp", k);
   return runner.run<ProbeResult>(cases);
 }
 

@@ -104,6 +104,10 @@ std::vector<Routine> routines(GeometryKind k) {
        scalar(&R::chart_scalars, 3)},
       {{"offsetFromSurface", ulps, trig}, in(p, v), twin<V4, V4>(k, model::offset_from_surface),
        out(&R::offset)},
+      {{"reflectInChartPlane", ulps},
+       in(p, [](const ProbeCase& c) { return v3(c.plane); },
+          [](const ProbeCase& c) { return double(c.plane[3]); }),
+       twin<V4, V3, double>(k, model::reflect_in_chart_plane), out(&R::reflected)},
   };
 }
 

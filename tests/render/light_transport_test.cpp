@@ -10,21 +10,6 @@
 namespace geodesic::test {
 namespace {
 
-double luminance_of(const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
-
-// sqrt(sum (Y_a - Y_b)^2 / sum Y_b^2) over pixel luminances Y: the error measure of
-// Renderer::estimated_error between two images.
-double relative_rms_difference(const Image& a, const Image& b) {
-  double difference = 0, signal = 0;
-  for (int y = 0; y < a.height; ++y)
-    for (int x = 0; x < a.width; ++x) {
-      const Rgb pa = mean(a, x, y, x + 1, y + 1), pb = mean(b, x, y, x + 1, y + 1);
-      difference += std::pow(luminance_of(pa) - luminance_of(pb), 2);
-      signal += std::pow(luminance_of(pb), 2);
-    }
-  return std::sqrt(difference / signal);
-}
-
 // A closed grey sphere around the camera, albedo 0.5 and emission 1: every pixel converges to
 // 1 / (1 - 0.5) = 2.
 std::string sphere_furnace(const char* geometry, double radius) {

@@ -1,6 +1,6 @@
 // Runs a test probe: a compute shader reading an array of cases from binding 0 and writing one
 // result per case to binding 1, with the case count as its only push constant. Probes are
-// compiled once per model geometry, like every entry point.
+// compiled at run time for one model geometry, like every entry point.
 #pragma once
 
 #include <algorithm>
@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "render/gpu_buffer.h"
+#include "render/pipeline_features.h"
+#include "render/shader_compiler.h"
 #include "render/shader_module.h"
 #include "render/vulkan_context.h"
 
@@ -42,7 +44,7 @@ class ProbeRunner {
     vk_check(vkCreatePipelineLayout(ctx.device(), &layout_info, nullptr, &layout_),
              "vkCreatePipelineLayout");
 
-    ShaderModule module(ctx.device(), shader, geometry);
+    ShaderModule module(ctx.device(), compile_shader(shader, {geometry_define(geometry)}).spirv);
     VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
     info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;

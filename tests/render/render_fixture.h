@@ -2,6 +2,7 @@
 // and image statistics to assert on.
 #pragma once
 
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -68,6 +69,21 @@ inline double rms_difference(const Image& a, const Image& b) {
     sum += d * d;
   }
   return std::sqrt(sum / a.rgb.size());
+}
+
+inline double luminance_of(const Rgb& c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+// sqrt(sum (Y_a - Y_b)^2 / sum Y_b^2) over pixel luminances Y: the error measure of
+// Renderer::estimated_error between two images.
+inline double relative_rms_difference(const Image& a, const Image& b) {
+  double difference = 0, signal = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      const Rgb pa = mean(a, x, y, x + 1, y + 1), pb = mean(b, x, y, x + 1, y + 1);
+      difference += std::pow(luminance_of(pa) - luminance_of(pb), 2);
+      signal += std::pow(luminance_of(pb), 2);
+    }
+  return std::sqrt(difference / signal);
 }
 
 }  // namespace geodesic::test

@@ -1,0 +1,94 @@
+// Compiled pipelines, keyed by the hash of what went into them (the backend, the feature
+// defines, the shader sources and glslang's version), so that reopening a scene or a second
+// session on the same scene compiles nothing:
+//   in memory  the built VkPipeline and its layout, shared by every renderer on this device;
+//   on disk    (when a directory is set: the daemon's data directory) the SPIR-V of each
+//              shader, checked by a digest, and the driver's VkPipelineCache blob.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "render/pipeline_features.h"
+#include "render/scene_layout.h"
+#include "render/shader_compiler.h"
+
+namespace geodesic {
+
+using Spirv = std::shared_ptr<const std::vector<uint32_t>>;
+
+// A built pipeline; destroyed with its last user, so dropping it from the cache is safe.
+struct CachedPipeline {
+  CachedPipeline(VkDevice device, const std::vector<uint32_t>& bindings)
+      : device(device), layout(device, bindings) {}
+  ~CachedPipeline() { vkDestroyPipeline(device, pipeline, nullptr); }
+  VkDevice device;
+  SceneLayout layout;  // the layout it was built with
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  double build_seconds = 0;  // compile (or disk read) + driver build, when it was built
+  size_t spirv_bytes = 0;    // over its shader stages
+};
+
+struct PipelineCacheStats {
+  uint64_t glsl_compiles = 0;    // shaders compiled by glslang
+  uint64_t spirv_disk_hits = 0;  // shaders read back from the directory instead
+  uint64_t pipeline_builds = 0;  // pipelines the driver built
+  uint64_t memory_hits = 0;      // pipelines reused as built
+};
+
+class PipelineCache {
+ public:
+  PipelineCache(VkDevice device, const uint8_t (&pipeline_cache_uuid)[VK_UUID_SIZE]);
+  ~PipelineCache();
+  PipelineCache(const PipelineCache&) = delete;
+  PipelineCache& operator=(const PipelineCache&) = delete;
+
+  // Keeps SPIR-V and the driver's cache in `dir` (created if missing) from now on; loads the
+  // driver's cache saved there before. Empty: memory only.
+  void set_directory(const std::filesystem::path& dir);
+
+  // The SPIR-V of shaders/<entry> under `features`: from memory, the directory or glslang.
+  Spirv spirv(const std::string& entry, const PipelineFeatures& features);
+  // The preprocessed GLSL and SPIR-V, compiled afresh (--dump-shaders).
+  static CompiledShader source(const std::string& entry, const PipelineFeatures& features);
+
+  // Builds the pipeline from its entries' SPIR-V (in order), with the layout and the driver's
+  // cache given.
+  using Builder =
+      std::function<VkPipeline(const std::vector<Spirv>&, const SceneLayout&, VkPipelineCache)>;
+  // The pipeline of `backend` for `features` made of shaders/<entries>, built by `build` the
+  // first time it is asked for.
+  std::shared_ptr<const CachedPipeline> pipeline(const std::string& backend,
+                                                 const PipelineFeatures& features,
+                                                 const std::vector<std::string>& entries,
+                                                 const Builder& build);
+
+  PipelineCacheStats stats() const;
+  // Drops the built pipelines, the SPIR-V and the driver's cache held in memory (not the
+  // directory): the next request builds again, as a new process would. For benchmarks.
+  void forget_pipelines();
+
+ private:
+  Spirv spirv_locked(const std::string& entry, const PipelineFeatures& features);
+  void save_driver_cache();
+  void reset_driver_cache();
+
+  VkDevice device_;
+  std::string uuid_hex_;
+  VkPipelineCache driver_cache_ = VK_NULL_HANDLE;
+  std::filesystem::path directory_;
+  mutable std::mutex mutex_;
+  std::map<std::string, Spirv> spirv_;
+  std::map<std::string, std::shared_ptr<CachedPipeline>> pipelines_;
+  PipelineCacheStats stats_;
+};
+
+}  // namespace geodesic

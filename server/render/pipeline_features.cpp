@@ -1,0 +1,198 @@
+#include "render/pipeline_features.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/scene_bindings.h"
+
+namespace geodesic {
+namespace {
+
+Mat4 from_float16(const Float16& f) {
+  Mat4 m;
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) m.m[r][c] = f[size_t(c * 4 + r)];  // column-major
+  return m;
+}
+
+// Equal up to float round-off of the packed matrices (entries reach cosh of the domain's
+// size in H3, hence the relative part).
+bool nearly_equal(const Mat4& a, const Mat4& b) {
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c)
+      if (std::abs(a.m[r][c] - b.m[r][c]) > 1e-5 * (1 + std::abs(b.m[r][c]))) return false;
+  return true;
+}
+
+bool is_translation(const Mat4& g) {
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 3; ++c)
+      if (std::abs(g.m[r][c] - (r == c ? 1.0 : 0.0)) > 1e-6) return false;
+  return std::abs(g.m[3][3] - 1) <= 1e-6;
+}
+
+// The one kind every face's pairing is, or Isometry when they differ.
+Crossing crossing_of(GeometryKind k, const PackedScene& packed) {
+  if (packed.faces.empty()) return Crossing::None;
+  bool identity = true, translation = k == GeometryKind::Euclidean, reflection = true;
+  for (size_t f = 0; f < packed.faces.size(); ++f) {
+    const GpuCellFace& face = packed.faces[f];
+    const Mat4 g = from_float16(face.pairing);
+    const Vec3 normal{face.plane[0], face.plane[1], face.plane[2]};
+    identity = identity && nearly_equal(g, Mat4::identity());
+    translation = translation && is_translation(g);
+    reflection = reflection && face.partner == f &&
+                 nearly_equal(g, model::reflection_in_chart_plane(k, normal, face.plane[3]));
+  }
+  if (identity) return Crossing::ChartChange;
+  if (translation) return Crossing::Translation;
+  // A mirror reflects in its own face's plane, which the shader knows without the matrix;
+  // that needs the face's chart to be the model's (one cell charted about the origin).
+  if (reflection && packed.cells.size() == 1) return Crossing::Reflection;
+  return Crossing::Isometry;
+}
+
+bool any_emitter_of_kind(const PackedScene& packed, EmitterKind kind) {
+  return std::any_of(packed.emitters.begin(), packed.emitters.end(),
+                     [&](const GpuEmitter& e) { return e.kind == uint32_t(kind); });
+}
+
+}  // namespace
+
+const char* crossing_name(Crossing crossing) {
+  switch (crossing) {
+    case Crossing::None: return "none";
+    case Crossing::ChartChange: return "chart-change";
+    case Crossing::Translation: return "translation";
+    case Crossing::Reflection: return "reflection";
+    case Crossing::Isometry: return "isometry";
+  }
+  return "?";
+}
+
+PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
+  PipelineFeatures f;
+  f.geometry = scene.geometry;
+  f.crossing = crossing_of(scene.geometry, packed);
+  f.multiple_charts = std::any_of(packed.cells.begin(), packed.cells.end(), [](const GpuCell& c) {
+    return !nearly_equal(from_float16(c.chart_isometry), Mat4::identity());
+  });
+  f.spheres = !packed.sphere_refs.empty();
+  f.triangles = !packed.triangles.empty();
+  f.smooth_normals = std::any_of(packed.triangles.begin(), packed.triangles.end(),
+                                 [](const GpuTriangle& t) { return t.smooth != 0; });
+  f.paper = scene.render.lighting == LightingModel::Paper;
+  f.physical = !f.paper;
+  f.light_sampling = f.physical && scene.render.light_sampling == LightSampling::Mis &&
+                     !packed.emitters.empty();
+  // BSDF sampling never finds a point light: without light sampling they do nothing.
+  f.point_lights = f.paper ? !packed.lights.empty()
+                           : f.light_sampling && any_emitter_of_kind(packed, EmitterKind::Point);
+  f.sphere_emitters = f.light_sampling && any_emitter_of_kind(packed, EmitterKind::Sphere);
+  f.triangle_emitters = f.light_sampling && any_emitter_of_kind(packed, EmitterKind::Triangle);
+  f.transmission = f.physical && std::any_of(scene.materials.begin(), scene.materials.end(),
+                                             [](const Material& m) {
+                                               return std::max({m.transmission.x, m.transmission.y,
+                                                                m.transmission.z}) > 0;
+                                             });
+  f.point_light_count = f.paper ? uint32_t(packed.lights.size()) : 0;
+  f.emitter_count = f.light_sampling ? uint32_t(packed.emitters.size()) : 0;
+  f.max_crossings = f.crossing == Crossing::None ? 0 : uint32_t(scene.manifold.max_crossings);
+  return f;
+}
+
+PipelineFeatures all_features(GeometryKind geometry) {
+  PipelineFeatures f;
+  f.geometry = geometry;
+  f.variant = PipelineVariant::AllFeatures;
+  f.crossing = Crossing::Isometry;
+  f.multiple_charts = f.spheres = f.triangles = f.smooth_normals = true;
+  f.paper = f.physical = f.point_lights = f.light_sampling = true;
+  f.sphere_emitters = f.triangle_emitters = f.transmission = true;
+  return f;
+}
+
+std::string geometry_define(GeometryKind geometry) {
+  std::string define = std::string("GEOMETRY_") + geometry_name(geometry);
+  std::transform(define.begin(), define.end(), define.begin(),
+                 [](unsigned char c) { return char(std::toupper(c)); });
+  return define;
+}
+
+std::vector<std::string> PipelineFeatures::defines() const {
+  std::vector<std::string> d{geometry_define(geometry)};
+  auto flag = [&](bool on, const char* name) {
+    if (on) d.emplace_back(name);
+  };
+  static const char* const kPairing[] = {"", "PAIRING_CHART_CHANGE", "PAIRING_TRANSLATION",
+                                         "PAIRING_REFLECTION", "PAIRING_ISOMETRY"};
+  flag(crossing != Crossing::None, "CELL_CROSSING");
+  flag(crossing != Crossing::None, kPairing[int(crossing)]);
+  flag(multiple_charts, "MULTIPLE_CHARTS");
+  flag(spheres, "HAS_SPHERES");
+  flag(triangles, "HAS_TRIANGLES");
+  flag(smooth_normals, "HAS_SMOOTH_NORMALS");
+  flag(paper, "LIGHTING_PAPER");
+  flag(physical, "LIGHTING_PHYSICAL");
+  flag(point_lights, "HAS_POINT_LIGHTS");
+  flag(light_sampling, "LIGHT_SAMPLING");
+  flag(sphere_emitters, "HAS_SPHERE_EMITTERS");
+  flag(triangle_emitters, "HAS_TRIANGLE_EMITTERS");
+  flag(transmission, "HAS_TRANSMISSION");
+  flag(variant == PipelineVariant::Specialised && primitive_culling && spheres != triangles,
+       "CULL_PRIMITIVES");
+  flag(shared_cell_masks, "SHARED_CELL_MASKS");
+  if (variant == PipelineVariant::Specialised) {
+    d.push_back("POINT_LIGHT_COUNT=" + std::to_string(point_light_count) + "u");
+    d.push_back("EMITTER_COUNT=" + std::to_string(emitter_count) + "u");
+    d.push_back("MAX_CROSSINGS=" + std::to_string(max_crossings) + "u");
+  }
+  return d;
+}
+
+std::vector<uint32_t> PipelineFeatures::bindings() const {
+  std::vector<uint32_t> b{kSceneBinding, kAccumulationBinding, kFrameBinding, kMaterialsBinding,
+                          kRayCountsBinding, kDiagnosticsBinding};
+  auto add = [&](bool on, std::initializer_list<uint32_t> list) {
+    if (on) b.insert(b.end(), list);
+  };
+  add(spheres, {kSpheresBinding, kSphereRefsBinding});
+  add(triangles, {kPositionsBinding, kIndicesBinding, kTrianglesBinding});
+  add(smooth_normals, {kNormalsBinding});
+  add(paper && point_lights, {kLightsBinding});
+  add(crossing != Crossing::None || multiple_charts, {kCellsBinding});
+  add(crossing != Crossing::None, {kCellFacesBinding});
+  add(light_sampling, {kEmittersBinding, kLightImagesBinding});
+  std::sort(b.begin(), b.end());
+  return b;
+}
+
+bool PipelineFeatures::uses_binding(uint32_t binding) const {
+  const auto b = bindings();
+  return std::find(b.begin(), b.end(), binding) != b.end();
+}
+
+std::string PipelineFeatures::summary() const {
+  if (variant == PipelineVariant::AllFeatures)
+    return std::string(geometry_name(geometry)) + " all-features";
+  std::string s = geometry_name(geometry);
+  auto word = [&](bool on, const std::string& w) {
+    if (on) s += " " + w;
+  };
+  word(crossing != Crossing::None, crossing_name(crossing));
+  word(multiple_charts, "charts");
+  word(spheres, "spheres");
+  word(triangles, "triangles");
+  word(smooth_normals, "smooth-normals");
+  word(true, paper ? "paper" : "physical");
+  word(point_lights, paper ? "point-lights(" + std::to_string(point_light_count) + ")"
+                            : std::string("point-lights"));
+  word(light_sampling, "mis(" + std::to_string(emitter_count) + ")");
+  word(sphere_emitters, "sphere-lights");
+  word(triangle_emitters, "triangle-lights");
+  word(transmission, "refraction");
+  word(shared_cell_masks, "shared-cell-masks");
+  return s;
+}
+
+}  // namespace geodesic

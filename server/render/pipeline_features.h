@@ -1,0 +1,66 @@
+// What a scene's pipeline needs, decided from the packed scene: the model geometry, the kind
+// of face crossing, the primitive types, the lighting model and its lights and lobes. Each
+// feature becomes a preprocessor define of the shaders (docs/pipelines.md lists them), so a
+// scene's pipeline carries only its own code; the all-features variant is the baseline the
+// benchmarks and tests compare against.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "render/packed_scene.h"
+#include "scene/scene.h"
+
+namespace geodesic {
+
+// How a ray leaving a cell through a face goes on.
+enum class Crossing {
+  None,         // no faces: one cell, the whole space in one chart
+  ChartChange,  // S3's atlas: the point stays, only the chart changes
+  Translation,  // E3 quotients whose pairings are all translations
+  Reflection,   // every face mirrors the cell onto itself
+  Isometry,     // general pairing isometries
+};
+
+enum class PipelineVariant { Specialised, AllFeatures };
+
+struct PipelineFeatures {
+  GeometryKind geometry = GeometryKind::Euclidean;
+  PipelineVariant variant = PipelineVariant::Specialised;
+  Crossing crossing = Crossing::None;
+  bool multiple_charts = false;  // cells charted about different points (S3's atlas)
+  bool spheres = false, triangles = false, smooth_normals = false;
+  bool paper = false, physical = false;  // lighting models compiled in
+  bool point_lights = false;             // point-light code (eq. 2.2 or point emitters)
+  bool light_sampling = false;           // next-event estimation and MIS
+  bool sphere_emitters = false, triangle_emitters = false;
+  bool transmission = false;             // the dielectric lobe
+  // The device can skip a primitive type during traversal (SKIP_AABBS / SKIP_TRIANGLES): set
+  // by the caller, used where the scene lacks spheres or triangles.
+  bool primitive_culling = false;
+  // More than eight cells: ray masks select cell % 8, and candidates of the other cells
+  // sharing the bit are rejected by cell (triangles then need any-hit checks). A requirement
+  // of the scene, in both variants.
+  bool shared_cell_masks = false;
+  // Baked constants (specialised only): loop bounds the compiler can unroll or drop.
+  uint32_t point_light_count = 0, emitter_count = 0, max_crossings = 0;
+
+  // The preprocessor defines, one "NAME" or "NAME=VALUE" each, in a fixed order.
+  std::vector<std::string> defines() const;
+  // The descriptor bindings (shaders/common/scene_data.glsl) the shaders read.
+  std::vector<uint32_t> bindings() const;
+  bool uses_binding(uint32_t binding) const;
+  // A readable one-line summary, e.g. "euclidean translation triangles paper point-lights".
+  std::string summary() const;
+};
+
+PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed);
+// Every feature, chosen at run time from the frame uniforms as before specialisation.
+PipelineFeatures all_features(GeometryKind geometry);
+
+const char* crossing_name(Crossing crossing);
+// "GEOMETRY_EUCLIDEAN", "GEOMETRY_HYPERBOLIC" or "GEOMETRY_SPHERICAL": what picks the model.
+std::string geometry_define(GeometryKind geometry);
+
+}  // namespace geodesic

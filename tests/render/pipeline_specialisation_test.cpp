@@ -1,0 +1,263 @@
+// Per-scene pipelines (render/pipeline_features.h): what each bundled scene compiles in, that
+// the dumped shaders leave out what a scene does not use, that every bundled scene renders the
+// same image with its specialised pipeline as with the all-features one, and that the
+// pipeline cache makes a second renderer (or a second process) compile nothing.
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "render/pipeline_cache.h"
+#include "render/scene_bindings.h"
+#include "render/shader_dump.h"
+#include "render_fixture.h"
+
+namespace geodesic::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> bundled_scenes() {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(source_path("scenes")))
+    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+Scene small(Scene scene, int size = 16) {
+  scene.render.width = scene.render.height = size;
+  return scene;
+}
+
+Scene bundled(const std::string& name) {
+  return small(load_scene_file(source_path("scenes/" + name + ".json")));
+}
+
+std::string read_text(const fs::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+// The scene's dumped GLSL (every entry point of the ray-query pipeline, concatenated, without
+// white space: glslang's preprocessor spaces tokens its own way) and the GLSL.std.450 extended
+// instructions its SPIR-V calls.
+struct Dump {
+  std::string glsl;
+  std::vector<uint32_t> extended_instructions;
+};
+
+Dump dump_of(const Scene& scene, const std::string& tag) {
+  const fs::path dir = fs::temp_directory_path() / ("geodesic-dump-" + tag);
+  fs::remove_all(dir);
+  Renderer renderer(device(), scene, BackendKind::RayQuery);
+  Dump dump;
+  for (const fs::path& file : dump_shaders(renderer, dir)) {
+    if (file.extension() == ".glsl")
+      for (char c : read_text(file))
+        if (!std::isspace(static_cast<unsigned char>(c))) dump.glsl += c;
+    if (file.extension() != ".spv") continue;
+    const std::string bytes = read_text(file);
+    std::vector<uint32_t> words(bytes.size() / 4);
+    std::memcpy(words.data(), bytes.data(), words.size() * 4);
+    // OpExtInst (opcode 12): result type, id, set, instruction, operands.
+    for (size_t i = 5; i < words.size(); i += std::max(1u, words[i] >> 16))
+      if ((words[i] & 0xffff) == 12) dump.extended_instructions.push_back(words[i + 4]);
+  }
+  fs::remove_all(dir);
+  return dump;
+}
+
+bool contains(const std::string& text, const std::string& token) {
+  return text.find(token) != std::string::npos;
+}
+
+// GLSL.std.450 Sinh, Cosh, Tanh, Asinh, Acosh, Atanh.
+bool calls_hyperbolic_functions(const Dump& d) {
+  return std::any_of(d.extended_instructions.begin(), d.extended_instructions.end(),
+                     [](uint32_t op) { return op >= 19 && op <= 24; });
+}
+
+TEST(PipelineFeatures, EachBundledSceneGetsItsPairingKindAndPrimitives) {
+  struct Expected {
+    const char* scene;
+    Crossing crossing;
+    bool spheres, triangles, paper;
+  };
+  const Expected expected[] = {
+      {"cornell-box", Crossing::None, true, true, false},
+      {"torus-cornell", Crossing::Translation, true, true, false},
+      {"mirrored-dodecahedron", Crossing::Reflection, true, true, false},
+      {"seifert-weber", Crossing::Isometry, true, true, false},
+      {"poincare-sphere", Crossing::Isometry, true, true, true},
+      {"spherical-spheres", Crossing::ChartChange, true, false, false},
+      {"hyperbolic-spheres", Crossing::None, true, true, true},
+      {"furnace", Crossing::None, false, true, false},
+  };
+  for (const Expected& e : expected) {
+    const Scene scene = bundled(e.scene);
+    const PipelineFeatures f = scene_features(scene, pack_scene(scene));
+    EXPECT_EQ(f.crossing, e.crossing) << e.scene << ": " << crossing_name(f.crossing);
+    EXPECT_EQ(f.spheres, e.spheres) << e.scene;
+    EXPECT_EQ(f.triangles, e.triangles) << e.scene;
+    EXPECT_EQ(f.paper, e.paper) << e.scene;
+    EXPECT_NE(f.paper, f.physical) << e.scene << ": one lighting model";
+  }
+}
+
+TEST(PipelineFeatures, BuffersOnlyForWhatTheSceneHas) {
+  const Scene furnace = bundled("furnace");  // triangles, emitters, no spheres, no faces
+  const PipelineFeatures f = scene_features(furnace, pack_scene(furnace));
+  for (uint32_t unused : {kSpheresBinding, kSphereRefsBinding, kLightsBinding, kCellsBinding,
+                          kCellFacesBinding, kNormalsBinding})
+    EXPECT_FALSE(f.uses_binding(unused)) << unused;
+  for (uint32_t used : {kPositionsBinding, kTrianglesBinding, kEmittersBinding})
+    EXPECT_TRUE(f.uses_binding(used)) << used;
+  EXPECT_EQ(all_features(GeometryKind::Euclidean).bindings().size(), size_t(kSceneBindingCount));
+}
+
+TEST(DumpedShaders, EuclideanSceneCarriesNoHyperbolicOrSphericalCode) {
+  const Dump euclidean = dump_of(bundled("cornell-box"), "e3");
+  const Dump hyperbolic = dump_of(bundled("hyperbolic-spheres"), "h3");
+  const Dump spherical = dump_of(bundled("spherical-spheres"), "s3");
+  for (const char* token : {"sinh(", "cosh(", "tanh(", "acosh(", "ANTIPODE_TOLERANCE"})
+    EXPECT_FALSE(contains(euclidean.glsl, token)) << token;
+  EXPECT_FALSE(calls_hyperbolic_functions(euclidean));
+  // The tokens are real: each curved model's own shaders have them.
+  EXPECT_TRUE(contains(hyperbolic.glsl, "cosh(") && contains(hyperbolic.glsl, "sinh("));
+  EXPECT_TRUE(calls_hyperbolic_functions(hyperbolic));
+  EXPECT_TRUE(contains(spherical.glsl, "ANTIPODE_TOLERANCE"));
+  EXPECT_FALSE(contains(spherical.glsl, "cosh("));
+}
+
+TEST(DumpedShaders, ScenesWithoutPointLightsCarryNoPointLightSampling) {
+  // Physical model: a point light is an emitter of kind EMITTER_POINT.
+  const Dump lamps = dump_of(bundled("spherical-lamps"), "lamps");
+  const Dump cornell = dump_of(bundled("cornell-box"), "cornell");
+  EXPECT_FALSE(contains(lamps.glsl, "ls.point=true"));
+  EXPECT_FALSE(contains(lamps.glsl, "e.kind==EMITTER_POINT"));
+  EXPECT_TRUE(contains(cornell.glsl, "ls.point=true"));
+  // Paper model: eq. 2.2's sum over point lights.
+  Scene dark = bundled("hyperbolic-spheres");
+  dark.lights.clear();
+  const Dump without = dump_of(dark, "dark");
+  const Dump with = dump_of(bundled("hyperbolic-spheres"), "lit");
+  EXPECT_FALSE(contains(without.glsl, "directIllumination"));
+  EXPECT_FALSE(contains(without.glsl, "lights["));
+  EXPECT_TRUE(contains(with.glsl, "directIllumination"));
+  // Neither model's code is in the other's pipeline.
+  EXPECT_FALSE(contains(cornell.glsl, "paperRadiance"));
+  EXPECT_FALSE(contains(with.glsl, "physicalRadiance"));
+}
+
+// Same samples, same estimator: the specialised image differs from the all-features one by at
+// most what their noise explains (usually not at all: most scenes agree bit for bit). Every
+// bundled scene with ray queries; with the ray-tracing pipeline, one per kind of hit groups
+// and crossing.
+TEST(SpecialisedPipelines, EveryBundledSceneRendersAsWithAllFeatures) {
+  const std::vector<std::string> pipeline_scenes = {"torus-cornell", "spherical-lamps",
+                                                    "mirrored-dodecahedron", "furnace"};
+  for (const std::string& name : bundled_scenes()) {
+    const Scene scene = bundled(name);
+    for (BackendKind backend : {BackendKind::RayQuery, BackendKind::RayTracingPipeline}) {
+      if (backend == BackendKind::RayTracingPipeline &&
+          (!device().description().ray_tracing_pipeline ||
+           std::find(pipeline_scenes.begin(), pipeline_scenes.end(), name) == pipeline_scenes.end()))
+        continue;
+      Renderer specialised(device(), scene, backend, PipelineVariant::Specialised);
+      Renderer all(device(), scene, backend, PipelineVariant::AllFeatures);
+      specialised.add_samples(8);
+      all.add_samples(8);
+      EXPECT_EQ(specialised.non_finite_samples(), 0u) << name;
+      const double noise = std::hypot(specialised.estimated_error(), all.estimated_error());
+      EXPECT_LE(relative_rms_difference(specialised.image(), all.image()), 1.5 * noise)
+          << name << " (" << specialised.backend_name() << ")";
+      const double a = luminance_of(mean(specialised.image())), b = luminance_of(mean(all.image()));
+      EXPECT_NEAR(a, b, 0.03 * b + 1e-6) << name;
+    }
+  }
+}
+
+// Past eight cells (L(5, 1): 24 chart pieces) cells share ray-mask bits, and the shaders keep
+// each ray to its own cell's candidates: in the ray-query loop, and with any-hit shaders in the
+// ray-tracing pipeline. Both back ends must agree.
+TEST(SharedCellMasks, ManyCellsRenderAlikeWithBothBackends) {
+  const Scene scene = small(load_scene_file(source_path("scenes/catalogue/lens-5-1.json")), 24);
+  Renderer query(device(), scene, BackendKind::RayQuery);
+  EXPECT_TRUE(query.features().shared_cell_masks);
+  query.add_samples(8);
+  EXPECT_EQ(query.non_finite_samples(), 0u);
+  EXPECT_GT(luminance_of(mean(query.image())), 0.01);
+  if (!device().description().ray_tracing_pipeline) GTEST_SKIP() << "no ray-tracing pipeline";
+  Renderer pipeline(device(), scene, BackendKind::RayTracingPipeline);
+  pipeline.add_samples(8);
+  const double noise = std::hypot(query.estimated_error(), pipeline.estimated_error());
+  EXPECT_LE(relative_rms_difference(query.image(), pipeline.image()), 1.5 * noise);
+}
+
+TEST(PipelineCache, SecondRendererOfASceneCompilesNothing) {
+  VulkanContext ctx;
+  const Scene scene = bundled("torus-cornell");
+  Renderer first(ctx, scene, BackendKind::RayQuery);
+  const PipelineCacheStats after_first = ctx.pipeline_cache().stats();
+  Renderer second(ctx, scene, BackendKind::RayQuery);
+  const PipelineCacheStats after_second = ctx.pipeline_cache().stats();
+  EXPECT_EQ(after_first.pipeline_builds, 1u);
+  EXPECT_EQ(after_second.pipeline_builds, 1u);
+  EXPECT_EQ(after_second.glsl_compiles, after_first.glsl_compiles);
+  EXPECT_EQ(after_second.memory_hits, after_first.memory_hits + 1);
+  EXPECT_EQ(&first.backend().pipeline(), &second.backend().pipeline());
+  // Another scene with other features gets its own pipeline.
+  Renderer other(ctx, bundled("hyperbolic-spheres"), BackendKind::RayQuery);
+  EXPECT_EQ(ctx.pipeline_cache().stats().pipeline_builds, 2u);
+  EXPECT_NE(&other.backend().pipeline(), &first.backend().pipeline());
+}
+
+TEST(PipelineCache, ANewProcessReadsTheDirectoryInsteadOfCompiling) {
+  const fs::path dir = fs::temp_directory_path() / "geodesic-pipeline-cache-test";
+  fs::remove_all(dir);
+  const Scene scene = bundled("cornell-box");
+  Image reference;
+  {
+    VulkanContext ctx;
+    ctx.pipeline_cache().set_directory(dir);
+    Renderer renderer(ctx, scene, BackendKind::RayQuery);
+    EXPECT_EQ(ctx.pipeline_cache().stats().glsl_compiles, 1u);
+    renderer.add_samples(4);
+    reference = renderer.image();
+  }
+  {
+    VulkanContext ctx;  // as a restarted daemon
+    ctx.pipeline_cache().set_directory(dir);
+    Renderer renderer(ctx, scene, BackendKind::RayQuery);
+    EXPECT_EQ(ctx.pipeline_cache().stats().glsl_compiles, 0u);
+    EXPECT_EQ(ctx.pipeline_cache().stats().spirv_disk_hits, 1u);
+    renderer.add_samples(4);
+    EXPECT_EQ(rms_difference(renderer.image(), reference), 0.0);
+  }
+  // A damaged file is compiled afresh (and rewritten), never handed to the driver.
+  for (const auto& entry : fs::directory_iterator(dir))
+    if (entry.path().extension() == ".spv") {
+      std::fstream file(entry.path(), std::ios::in | std::ios::out | std::ios::binary);
+      file.seekp(200);
+      file.write("garbage!", 8);
+    }
+  VulkanContext ctx;
+  ctx.pipeline_cache().set_directory(dir);
+  Renderer renderer(ctx, scene, BackendKind::RayQuery);
+  EXPECT_EQ(ctx.pipeline_cache().stats().glsl_compiles, 1u);
+  EXPECT_EQ(ctx.pipeline_cache().stats().spirv_disk_hits, 0u);
+  renderer.add_samples(4);
+  EXPECT_EQ(rms_difference(renderer.image(), reference), 0.0);
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace geodesic::test
