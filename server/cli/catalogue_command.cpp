@@ -24,6 +24,8 @@ void write_file(const std::filesystem::path& path, const std::string& text) {
 
 int catalogue_command(int argc, char** argv) {
   if (argc > 1) throw std::invalid_argument("expected at most one argument, ROOT");
+  if (argc == 1 && argv[0][0] == '-')
+    throw std::invalid_argument(std::string("unknown option ") + argv[0] + " (catalogue [ROOT])");
   const std::filesystem::path root = argc == 1 ? argv[0] : ".";
   const auto data = root / "catalogue", scenes = root / "scenes" / "catalogue";
   std::filesystem::create_directories(data);

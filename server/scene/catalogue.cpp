@@ -129,7 +129,9 @@ std::vector<CatalogueEntry> build() {
                         "Poincare dodecahedral space S3 / I* (binary icosahedral)",
                         "left multiplication by (1 + i + j + k) / 2 and (phi + i / phi + j) / 2",
                         {tetra, left_multiplication(phi / 2, 0.5 / phi, 0.5, 0)}, 120));
-  for (const auto& [p, q] : {std::pair{5, 2}, {7, 2}, {7, 3}, {8, 3}, {9, 2}, {11, 3}, {12, 5}})
+  // L(p, 1) and its mirror image L(p, p - 1) preserve a great circle, like RP3 below.
+  for (const auto& [p, q] : {std::pair{3, 1}, {5, 1}, {5, 2}, {6, 5}, {7, 2}, {7, 3}, {8, 3},
+                             {9, 2}, {11, 3}, {12, 5}})
     c.push_back(lens(p, q));
   // -I preserves every great circle: the domain is cut into pieces (chart_atlas.h).
   c.push_back(spherical("projective-space", "Projective 3-space RP3 = L(2,1)",
@@ -237,10 +239,10 @@ std::string catalogue_readme() {
       "Volumes: flat spaces, the translation lattice's covolume over the holonomy's order;\n"
       "spherical ones, 2 pi^2 / |Gamma|; hyperbolic ones, published values (the tests compare\n"
       "all of them with the volume of the computed Dirichlet domain).\n\n"
-      "Projective space preserves a great circle, so no fundamental domain fits one gnomonic\n"
-      "chart: its Dirichlet domain (a hemisphere) is cut into 7 pieces charted apart\n"
-      "(server/scene/chart_atlas.h). L(p, 1) and the mirrored lenses would need about 20 such\n"
-      "pieces, more than the renderer's 8 cells, and are missing for that reason.\n\n"
+      "Projective space, L(p, 1) and its mirror image L(p, p - 1) preserve a great circle, so no\n"
+      "fundamental domain fits one gnomonic chart: their Dirichlet domains are cut into pieces\n"
+      "charted apart (server/scene/chart_atlas.h), up to 128; past eight, the renderer's cells\n"
+      "share ray-mask bits and filter candidates by cell (docs/pipelines.md).\n\n"
       "| name | geometry | order | volume | Dirichlet domain | generators |\n"
       "|---|---|---|---|---|---|\n";
   for (const CatalogueEntry& e : catalogue()) {

@@ -13,8 +13,10 @@ namespace {
 
 constexpr auto kS3 = GeometryKind::Spherical;
 constexpr std::size_t kMaxPieceFaces = 64;
-// The renderer selects a cell's geometry by the 8-bit instance mask of ray queries.
-constexpr std::size_t kMaxPieces = 8;
+// Each piece is a cell of the renderer, with its own acceleration-structure instances; past
+// eight cells they share mask bits and the shaders filter candidates by cell
+// (SHARED_CELL_MASKS, docs/pipelines.md).
+constexpr std::size_t kMaxPieces = 128;
 
 double distance4(const Vec4& a, const Vec4& b) { return std::sqrt(dot(a - b, a - b)); }
 
@@ -129,10 +131,9 @@ Manifold chart_atlas_manifold(const std::vector<GroupElement>& elements, double 
 
   if (pieces.size() > kMaxPieces)
     throw SceneError("generators: the domain needs " + std::to_string(pieces.size()) +
-                     " chart pieces, but the renderer keeps at most " +
-                     std::to_string(kMaxPieces) +
-                     " cells (one bit of the 8-bit ray mask per cell): the group preserves a "
-                     "great circle, so no single chart holds its domain");
+                     " chart pieces (the group preserves a great circle, so no single chart "
+                     "holds its domain); the renderer keeps at most " +
+                     std::to_string(kMaxPieces) + " cells");
   Manifold m;
   m.name = "generators";
   std::vector<int> first_face;
