@@ -54,8 +54,7 @@ void write_durably(const std::filesystem::path& path,
     const std::string cause = out_of_room(temporary, errno);
     std::error_code ignored;
     std::filesystem::remove(temporary, ignored);  // a partial file only takes room
-    throw std::runtime_error(path.string() + ": " +
-                             (cause.empty() ? e.what() : cause + " (" + e.what() + ")"));
+    throw std::runtime_error(path.string() + ": " + (cause.empty() ? "" : cause + "; ") + e.what());
   }
   std::error_code ec;
   std::filesystem::rename(temporary, path, ec);
