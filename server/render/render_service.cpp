@@ -169,10 +169,14 @@ struct RenderService::Impl {
   void run() {
     std::unique_lock lock(mutex);
     while (!stopping) {
+      // A session's or a job's submission lost the device: replace it before anyone renders on
+      // the lost one (which would fail whichever session came next).
+      if (ctx->lost()) replace_lost_device();
       auto it = sessions.upper_bound(last_served);
       if (it == sessions.end()) {
         // Between rounds: a background turn, or a pause when there is nothing to do.
         const bool handed_over = hand_over_background(lock);
+        if (ctx->lost()) replace_lost_device();
         it = sessions.begin();
         if (it == sessions.end() && !handed_over)
           wake.wait_for(lock, std::chrono::milliseconds(50));
@@ -186,7 +190,6 @@ struct RenderService::Impl {
           fail(it->first, std::string("render: ") + e.what());
         }
       }
-      if (ctx->lost()) replace_lost_device();  // a session's or a job's submission lost it
       // Let waiting callers (moves, new scenes, stats) in between slices.
       lock.unlock();
       for (int spins = 0; waiting.load() > 0 && spins < 100; ++spins)
