@@ -2,13 +2,17 @@
 // data directory, and every accepted job is still there, a finished job's files are the same
 // bytes, and the running job resumes from its checkpoint (its sample count goes on, not from 0)
 // and completes. A SIGTERM checkpoints the running job as it stops; a result that does not fit
-// on the disk fails its job with the reason and touches nothing else; a lost Vulkan device
-// makes the job start over from its checkpoint, an out-of-device-memory error fails it.
+// (under a file-size limit, or on a full tmpfs) fails its job with the reason and touches
+// nothing else; a lost Vulkan device makes the job start over from its checkpoint, an
+// out-of-device-memory error fails it.
+#include <cerrno>
 #include <csignal>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
 #include <gtest/gtest.h>
+#include <sys/mount.h>
 #include <sys/resource.h>
 
 #include "job_daemon.h"
@@ -174,6 +178,38 @@ TEST(JobsDurability, AResultTooLargeForTheDiskFailsItsJobAndNothingElse) {
   EXPECT_EQ(api.wait_for(api.submit(kShortJob), job_ended)["state"], "done");  // the store goes on
   EXPECT_EQ(file_bytes(kept), kept_bytes);
   EXPECT_EQ(api.get("/api/jobs").json["jobs"].size(), 4u);
+  for (const auto& entry : fs::recursive_directory_iterator(dir))
+    EXPECT_EQ(entry.path().string().find(".partial"), std::string::npos) << entry.path();
+}
+
+// A full disk for real: a 3 MiB tmpfs as the data directory (mounting one needs root; the test
+// is skipped without). A 1920x1080 EXR result (about 25 MB) does not fit: its job fails naming
+// ENOSPC, and the jobs before and after it are done.
+TEST(JobsDurability, AFullDiskFailsTheJobWhoseResultDoesNotFit) {
+  TempDir data;
+  const fs::path disk = data.path() / "disk";
+  fs::create_directories(disk);
+  if (mount("tmpfs", disk.c_str(), "tmpfs", 0, "size=3m") != 0)
+    GTEST_SKIP() << "mounting a tmpfs: " << std::strerror(errno);
+  struct Unmount {  // after the daemon, declared below, has ended
+    const fs::path& disk;
+    ~Unmount() { umount2(disk.c_str(), MNT_DETACH); }
+  } unmount{disk};
+  const fs::path dir = disk / "data";
+  DaemonProcess daemon(dir, {"--max-jobs", "1"});
+  const JobsApi api(daemon.port());
+  const int64_t before = api.submit(kShortJob);
+  const int64_t full = api.submit({{"scene", "cornell-box"}, {"width", 1920}, {"height", 1080},
+                                   {"spp", 1}, {"formats", {"exr"}}});
+  const int64_t after = api.submit(kShortJob);
+  EXPECT_EQ(api.wait_for(before, job_ended)["state"], "done");
+  const json failed = api.wait_for(full, job_ended, std::chrono::seconds(240));
+  EXPECT_EQ(failed["state"], "failed") << failed.dump();
+  const std::string message = failed["message"];
+  std::printf("full disk: %s\n", message.c_str());
+  EXPECT_NE(message.find("result.exr: No space left on device"), std::string::npos) << message;
+  EXPECT_EQ(api.wait_for(after, job_ended)["state"], "done");
+  EXPECT_TRUE(fs::exists(dir / "jobs" / std::to_string(before) / "result.png"));
   for (const auto& entry : fs::recursive_directory_iterator(dir))
     EXPECT_EQ(entry.path().string().find(".partial"), std::string::npos) << entry.path();
 }
