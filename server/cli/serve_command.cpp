@@ -25,11 +25,13 @@ namespace {
 struct ServeOptions {
   net::ServerOptions server;
   jobs::JobOptions jobs;
+  ServiceLimits limits;
   std::string device;
 };
 
 constexpr const char* kFlags[] = {"--host", "--port", "--device", "--web", "--data", "--token",
-                                  "--max-jobs", "--max-queue", "--checkpoint-seconds"};
+                                  "--max-jobs", "--max-queue", "--checkpoint-seconds",
+                                  "--max-sessions"};
 
 // $XDG_DATA_HOME/geodesic, else ~/.local/share/geodesic (the XDG base directory default).
 std::filesystem::path default_data_dir() {
@@ -68,6 +70,7 @@ void apply(ServeOptions& options, const std::string& flag, const std::string& va
   else if (flag == "--max-queue") options.jobs.max_queued = int(integer(flag, value, 0, 100000));
   else if (flag == "--checkpoint-seconds")
     options.jobs.checkpoint_seconds = double(integer(flag, value, 1, 86400));
+  else if (flag == "--max-sessions") options.limits.max_sessions = int(integer(flag, value, 1, 1024));
   else throw std::invalid_argument("unknown option " + flag);
 }
 
@@ -102,8 +105,11 @@ int serve_command(int argc, char** argv) {
   sigaddset(&stop_signals, SIGINT);
   sigaddset(&stop_signals, SIGTERM);
   pthread_sigmask(SIG_BLOCK, &stop_signals, nullptr);
+  // A file-size limit (ulimit -f) then fails the write with EFBIG, which the job reports, rather
+  // than killing the daemon.
+  std::signal(SIGXFSZ, SIG_IGN);
 
-  RenderService render(options.device, GEODESIC_SOURCE_DIR "/scenes");
+  RenderService render(options.device, GEODESIC_SOURCE_DIR "/scenes", options.limits);
   render.use_pipeline_cache(options.jobs.data_dir / "pipeline-cache");
   jobs::JobQueue jobs(render, options.jobs);
   net::Server server(render, options.server, &jobs);

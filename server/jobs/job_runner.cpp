@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdio>
 #include <memory>
 
 #include "jobs/checkpoint.h"
 #include "jobs/durable_file.h"
 #include "render/image_io.h"
 #include "render/renderer.h"
+#include "render/vulkan_context.h"
 
 namespace geodesic::jobs {
 namespace {
@@ -21,6 +23,9 @@ constexpr uint32_t kMaxBatch = 256;
 // Rows of the first band, before the cost of a row is known (a small start keeps the first turn
 // within about a slice on any image).
 constexpr int kFirstBand = 8;
+// Device losses a job starts over after (from its checkpoint, on the service's new device)
+// before it fails.
+constexpr int kDeviceLossRetries = 3;
 
 double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
@@ -60,10 +65,20 @@ JobRecord JobRunner::status() const {
 }
 
 void JobRunner::run() {
-  try {
-    render();
-  } catch (const std::exception& e) {
-    save(JobState::Failed, e.what());
+  for (int losses = 0;; ++losses) {
+    try {
+      render();
+    } catch (const VulkanError& e) {
+      if (e.result() == VK_ERROR_DEVICE_LOST && losses < kDeviceLossRetries) {
+        std::fprintf(stderr, "geodesic: job %lld: %s; starting over from its checkpoint\n",
+                     static_cast<long long>(job_.id), e.what());
+        continue;
+      }
+      save(JobState::Failed, e.what());
+    } catch (const std::exception& e) {
+      save(JobState::Failed, e.what());
+    }
+    break;
   }
   finished_ = true;
 }
@@ -77,7 +92,9 @@ void JobRunner::save(JobState state, const std::string& message) {
     job_.message = message;
     copy = job_;
   }
-  if (jobs::finished(state)) std::filesystem::remove(dir_ / "checkpoint.bin");
+  std::error_code ignored;
+  if (state == JobState::Failed) std::filesystem::remove_all(dir_, ignored);  // results half written
+  else if (jobs::finished(state)) std::filesystem::remove(dir_ / "checkpoint.bin", ignored);
   store_.update(copy);
 }
 
@@ -123,10 +140,24 @@ void JobRunner::render() {
 
   const auto started = Clock::now();
   auto last_checkpoint = started;
+  uint32_t checkpointed = checkpoint ? checkpoint->samples : 0;
+  auto save_checkpoint = [&](const ErrorSample& pass_end) {
+    write_checkpoint(checkpoint_file, pass_end.spp, pass_end.seconds, width, height,
+                     renderer->accumulation());
+    last_checkpoint = Clock::now();
+    checkpointed = pass_end.spp;
+    {
+      std::lock_guard lock(mutex_);
+      job_.checkpoint_samples = pass_end.spp;
+    }
+    save(JobState::Running);
+  };
   double last_point = -kSeriesInterval;
   uint32_t batch = 1, next_row = 0;
   double seconds_per_pixel_sample = 0;
-  while (!stop_) {
+  ErrorSample now{elapsed_before, checkpointed, -1};  // at the end of the last whole pass
+  // A stop (the daemon shutting down) first finishes the pass in progress.
+  while (!stop_ || next_row != 0) {
     if (cancel_) {
       release();
       return save(JobState::Cancelled);
@@ -159,8 +190,8 @@ void JobRunner::render() {
     if (!pass_done) continue;
 
     // Between passes the accumulation is this thread's alone: no device turn needed to read it.
-    const ErrorSample now{elapsed_before + seconds_since(started), renderer->samples(),
-                          renderer->estimated_error()};
+    now = {elapsed_before + seconds_since(started), renderer->samples(),
+           renderer->estimated_error()};
     const bool reached = stop.reached(now);
     {
       std::lock_guard lock(mutex_);
@@ -177,22 +208,20 @@ void JobRunner::render() {
       const Image image = renderer->image();
       release();
       for (const std::string& format : job.request.formats)
-        write_durably(dir_ / ("result." + format),
-                      [&](const std::filesystem::path& file) { write_image(file, image); });
+        write_durably(dir_ / ("result." + format), [&](const std::filesystem::path& file) {
+          write_image(file, image);
+          // libpng (through OpenImageIO) does not report a short write on a full disk.
+          const Image written = read_image(file);
+          if (written.width != image.width || written.height != image.height)
+            throw std::runtime_error(file.string() + ": reads back as another image");
+        });
       return save(JobState::Done);
     }
-    if (seconds_since(last_checkpoint) >= checkpoint_seconds_) {
-      write_checkpoint(checkpoint_file, now.spp, now.seconds, width, height,
-                       renderer->accumulation());
-      last_checkpoint = Clock::now();
-      {
-        std::lock_guard lock(mutex_);
-        job_.checkpoint_samples = now.spp;
-      }
-      save(JobState::Running);
-    }
+    if (seconds_since(last_checkpoint) >= checkpoint_seconds_) save_checkpoint(now);
   }
-  // A shutdown: the store keeps the job running, to resume from its checkpoint.
+  // A shutdown: the store keeps the job running, to resume from a checkpoint of every sample
+  // rendered (a pass cut short by the service stopping is not one: it goes back to the last).
+  if (next_row == 0 && now.spp > checkpointed) save_checkpoint(now);
 }
 
 }  // namespace geodesic::jobs

@@ -2,7 +2,9 @@
 // turns RenderService::run_background hands out (interactive sessions first). At the end of a
 // pass, at most every checkpoint_seconds, it checkpoints the accumulation (checkpoint.h) and
 // saves its progress in the store; a resumed job starts from that checkpoint with the sample
-// count, and so the random streams, going on. When done it writes the results atomically.
+// count, and so the random streams, going on. When done it writes the results atomically and
+// reads them back. A lost device makes it start over from its checkpoint on the service's new
+// one (a few times); any other error fails the job with the reason, and its files go.
 #pragma once
 
 #include <atomic>
@@ -20,7 +22,9 @@ class JobRunner {
   // `job` is queued, or running when the daemon stopped: its folder `dir` may hold a checkpoint.
   JobRunner(RenderService& service, JobStore& store, JobRecord job, std::filesystem::path dir,
             double checkpoint_seconds);
-  ~JobRunner();  // leaves the job as it is in the store (a shutdown: it resumes next start)
+  // A shutdown: finishes the pass in progress, checkpoints it, and leaves the job running in the
+  // store, to resume on the next start.
+  ~JobRunner();
   JobRunner(const JobRunner&) = delete;
   JobRunner& operator=(const JobRunner&) = delete;
 

@@ -44,6 +44,13 @@ struct WebSocketSession::FrameRelay {
       if (auto s = session.lock()) s->on_frame(std::move(frame));
     });
   }
+  void fail(const std::string& reason) {
+    std::lock_guard lock(mutex);
+    if (!open) return;
+    asio::post(strand, [session = session, reason] {
+      if (auto s = session.lock()) s->on_render_failed(reason);
+    });
+  }
   void cut() {
     std::lock_guard lock(mutex);
     open = false;
@@ -83,7 +90,8 @@ void WebSocketSession::on_accept(beast::error_code ec) {
   RenderService& render = context_.render;
   try {
     id_ = render.open_session(
-        [relay = relay_](std::shared_ptr<const EncodedFrame> frame) { relay->deliver(frame); });
+        [relay = relay_](std::shared_ptr<const EncodedFrame> frame) { relay->deliver(frame); },
+        [relay = relay_](const std::string& reason) { relay->fail(reason); });
   } catch (const std::exception& e) {
     close(static_cast<uint16_t>(websocket::close_code::try_again_later), e.what());
     return;
@@ -165,15 +173,29 @@ void WebSocketSession::on_frame(std::shared_ptr<const EncodedFrame> frame) {
   pump();
 }
 
+// The render service has closed this session (a Vulkan error): the client gets an `error`
+// naming it, then the close (1011); it may reconnect.
+void WebSocketSession::on_render_failed(const std::string& reason) {
+  if (!id_ || close_reason_) return;
+  id_.reset();  // the service has closed it already
+  waiting_frame_.reset();
+  texts_.push_back(error_message(ProtocolError("", reason)));
+  close_reason_ = make_reason(static_cast<uint16_t>(websocket::close_code::internal_error), reason);
+  close_deadline_ = Clock::now() + kCloseDeadline;
+  arm_timer(close_deadline_);
+  pump();
+}
+
 void WebSocketSession::send_text(std::string text) {
   texts_.push_back(std::move(text));
   pump();
 }
 
-// Starts the next write when none is in flight: replies first, then the newest frame.
+// Starts the next write when none is in flight: replies first, then the newest frame; a close
+// waits for the replies still queued (close() drops them; a failed render queues its error).
 void WebSocketSession::pump() {
   if (writing_ != Writing::nothing || close_started_) return;
-  if (close_reason_) return start_close();
+  if (close_reason_ && texts_.empty()) return start_close();
   if (!texts_.empty()) {
     text_in_flight_ = std::move(texts_.front());
     texts_.pop_front();

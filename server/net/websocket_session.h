@@ -38,6 +38,7 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   void on_read(beast::error_code ec, std::size_t bytes);
   void handle_message(const std::string& text);
   void on_frame(std::shared_ptr<const EncodedFrame> frame);
+  void on_render_failed(const std::string& reason);
   void send_text(std::string text);
   void pump();
   void on_write(beast::error_code ec, std::size_t bytes);

@@ -7,15 +7,18 @@
 #include <cmath>
 #include <chrono>
 #include <condition_variable>
+#include <cstdio>
 #include <deque>
 #include <filesystem>
 #include <map>
 #include <mutex>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 
 #include "render/jpeg_encoder.h"
 #include "render/renderer.h"
+#include "render/vulkan_context.h"
 #include "scene/scene_loader.h"
 
 namespace geodesic {
@@ -32,6 +35,8 @@ constexpr double kSliceSeconds = RenderService::kSliceSeconds;
 constexpr double kSettleSeconds = 0.25;
 constexpr double kMovingFrameSeconds = 0.03;
 constexpr int kMaxMovingDivisor = 8;
+// After a device loss, a new device is tried at most this often.
+constexpr auto kDeviceRetry = std::chrono::seconds(1);
 
 double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
@@ -41,6 +46,7 @@ double seconds_since(Clock::time_point t) {
 
 struct Session {
   RenderService::FrameCallback on_frame;
+  RenderService::FailureCallback on_failure;
   Scene scene;
   std::string scene_name;
   std::unique_ptr<Renderer> renderer;
@@ -55,7 +61,13 @@ struct Session {
 };
 
 struct RenderService::Impl {
-  VulkanContext ctx;
+  const std::string device_selector;
+  std::unique_ptr<VulkanContext> ctx;
+  std::filesystem::path pipeline_cache_dir;  // kept for a replacement device
+  // Devices lost so far, kept until the service ends: render jobs may still hold renderers made
+  // on them, which free their objects through them.
+  std::vector<std::unique_ptr<VulkanContext>> lost_devices;
+  Clock::time_point next_device_attempt;
   std::string scene_dir;
   ServiceLimits limits;
   JpegEncoder encoder;
@@ -80,8 +92,11 @@ struct RenderService::Impl {
   std::thread thread;
 
   Impl(const std::string& device, std::string dir, ServiceLimits l)
-      : ctx(device), scene_dir(std::move(dir)), limits(l) {
-    stats.device = ctx.description().name;
+      : device_selector(device),
+        ctx(std::make_unique<VulkanContext>(device)),
+        scene_dir(std::move(dir)),
+        limits(l) {
+    stats.device = ctx->description().name;
     thread = std::thread([this] { run(); });
   }
 
@@ -117,7 +132,7 @@ struct RenderService::Impl {
       throw SceneError("render.height: must be <= " + std::to_string(limits.max_height) + " on this server");
     if (scene.render.max_depth > limits.max_depth)
       throw SceneError("render.max_depth: must be <= " + std::to_string(limits.max_depth) + " on this server");
-    auto renderer = std::make_unique<Renderer>(ctx, scene);
+    auto renderer = std::make_unique<Renderer>(*ctx, scene);
     s.renderer = std::move(renderer);
     s.scene = std::move(scene);
     s.scene_name = std::move(name);
@@ -157,10 +172,14 @@ struct RenderService::Impl {
   void run() {
     std::unique_lock lock(mutex);
     while (!stopping) {
+      // A session's or a job's submission lost the device: replace it before anyone renders on
+      // the lost one (which would fail whichever session came next).
+      if (ctx->lost()) replace_lost_device();
       auto it = sessions.upper_bound(last_served);
       if (it == sessions.end()) {
         // Between rounds: a background turn, or a pause when there is nothing to do.
         const bool handed_over = hand_over_background(lock);
+        if (ctx->lost()) replace_lost_device();
         it = sessions.begin();
         if (it == sessions.end() && !handed_over)
           wake.wait_for(lock, std::chrono::milliseconds(50));
@@ -168,7 +187,11 @@ struct RenderService::Impl {
       if (it != sessions.end()) {
         last_served = it->first;
         stats.queue_depth = int(sessions.size()) - 1;
-        serve(*it->second);
+        try {
+          serve(*it->second);
+        } catch (const std::exception& e) {  // its renderer may be half-way through a pass
+          fail(it->first, std::string("render: ") + e.what());
+        }
       }
       // Let waiting callers (moves, new scenes, stats) in between slices.
       lock.unlock();
@@ -176,6 +199,46 @@ struct RenderService::Impl {
         std::this_thread::sleep_for(std::chrono::microseconds(100));
       lock.lock();
     }
+  }
+
+  // Closes a session whose render failed; its client hears why.
+  void fail(SessionId id, const std::string& reason) {
+    auto session = sessions.extract(id);
+    stats.sessions = int(sessions.size());
+    std::fprintf(stderr, "geodesic: session %llu closed: %s\n",
+                 static_cast<unsigned long long>(id), reason.c_str());
+    if (session.mapped()->on_failure) session.mapped()->on_failure(reason);
+  }
+
+  // A lost device can only have its objects destroyed: the sessions' renderers go, a new device
+  // is made with the same selector, and every session gets a new renderer on it at its own
+  // scene, view and settings (accumulation starts over). Render jobs find their renderers'
+  // device lost at their next turn and start over from their checkpoints (jobs/job_runner.h).
+  void replace_lost_device() {
+    if (Clock::now() < next_device_attempt) return;
+    next_device_attempt = Clock::now() + kDeviceRetry;
+    std::unique_ptr<VulkanContext> fresh;
+    try {
+      fresh = std::make_unique<VulkanContext>(device_selector);
+      fresh->pipeline_cache().set_directory(pipeline_cache_dir);
+    } catch (const std::exception& e) {  // sessions fail on the lost one until a retry works
+      std::fprintf(stderr, "geodesic: Vulkan device lost, no new one yet: %s\n", e.what());
+      return;
+    }
+    for (auto& [id, s] : sessions) s->renderer.reset();
+    lost_devices.push_back(std::exchange(ctx, std::move(fresh)));
+    std::fprintf(stderr, "geodesic: Vulkan device lost; rendering on a new %s device\n",
+                 ctx->description().name.c_str());
+    std::vector<std::pair<SessionId, std::string>> failed;
+    for (auto& [id, s] : sessions) {
+      try {
+        s->renderer = std::make_unique<Renderer>(*ctx, s->scene);
+        restart(*s, false);
+      } catch (const std::exception& e) {
+        failed.emplace_back(id, std::string("render: on the new device: ") + e.what());
+      }
+    }
+    for (const auto& [id, reason] : failed) fail(id, reason);
   }
 
   // Gives the device to the first background caller for one turn unless a session is moving;
@@ -245,7 +308,8 @@ RenderService::~RenderService() = default;
 
 void RenderService::use_pipeline_cache(const std::filesystem::path& dir) {
   std::lock_guard lock(impl_->mutex);
-  impl_->ctx.pipeline_cache().set_directory(dir);
+  impl_->pipeline_cache_dir = dir;
+  impl_->ctx->pipeline_cache().set_directory(dir);
 }
 
 std::vector<std::string> RenderService::bundled_scenes() const {
@@ -258,7 +322,8 @@ std::vector<std::string> RenderService::bundled_scenes() const {
 
 const ServiceLimits& RenderService::limits() const { return impl_->limits; }
 
-RenderService::SessionId RenderService::open_session(FrameCallback on_frame) {
+RenderService::SessionId RenderService::open_session(FrameCallback on_frame,
+                                                     FailureCallback on_failure) {
   Scene scene = load_scene_file(std::filesystem::path(impl_->scene_dir) / "cornell-box.json");
   auto lock = impl_->lock();
   if (int(impl_->sessions.size()) >= impl_->limits.max_sessions)
@@ -266,6 +331,7 @@ RenderService::SessionId RenderService::open_session(FrameCallback on_frame) {
                              " open)");
   auto session = std::make_unique<Session>();
   session->on_frame = std::move(on_frame);
+  session->on_failure = std::move(on_failure);
   impl_->install(*session, std::move(scene), "cornell-box");
   const SessionId id = impl_->next_id++;
   impl_->sessions[id] = std::move(session);
@@ -362,7 +428,7 @@ bool RenderService::run_background(const std::function<void(VulkanContext&)>& wo
       impl.background_turn.notify_all();
     }
   } give_back{impl};
-  work(impl.ctx);
+  work(*impl.ctx);
   return true;
 }
 

@@ -67,6 +67,10 @@ class RenderService {
   // Called on the render thread with each new frame of the session; it must return quickly and
   // must not call back into the service (hand the frame to another thread).
   using FrameCallback = std::function<void(std::shared_ptr<const EncodedFrame>)>;
+  // Called on the render thread, as FrameCallback, when rendering the session failed (a Vulkan
+  // error such as VK_ERROR_DEVICE_LOST or VK_ERROR_OUT_OF_DEVICE_MEMORY): the session is closed
+  // already, and the reason names the error.
+  using FailureCallback = std::function<void(const std::string& reason)>;
 
   // device: as --device; scene_dir: where bundled scenes live. Throws VulkanError.
   RenderService(const std::string& device, std::string scene_dir, ServiceLimits limits = {});
@@ -82,8 +86,9 @@ class RenderService {
   const ServiceLimits& limits() const;
 
   // Opens a session on the default scene ("cornell-box"); throws std::runtime_error when
-  // max_sessions are open.
-  SessionId open_session(FrameCallback on_frame);
+  // max_sessions are open. A failed render ends only its own session; after a device loss the
+  // service makes a new device and the other sessions go on, their accumulation started over.
+  SessionId open_session(FrameCallback on_frame, FailureCallback on_failure = nullptr);
   void close_session(SessionId id);
 
   // A bundled scene by name, or an inline scene document (mesh paths relative to the scene

@@ -7,6 +7,8 @@
 #include <cstring>
 #include <set>
 
+#include "render/fault_injection.h"
+
 namespace geodesic {
 namespace {
 
@@ -130,9 +132,25 @@ std::optional<size_t> choose(const std::vector<DeviceDescription>& devices,
 
 }  // namespace
 
+namespace {
+
+// The results a render service has to tell apart by name; others by number.
+std::string result_name(VkResult result) {
+  switch (result) {
+    case VK_ERROR_DEVICE_LOST: return "VK_ERROR_DEVICE_LOST";
+    case VK_ERROR_OUT_OF_DEVICE_MEMORY: return "VK_ERROR_OUT_OF_DEVICE_MEMORY";
+    case VK_ERROR_OUT_OF_HOST_MEMORY: return "VK_ERROR_OUT_OF_HOST_MEMORY";
+    case VK_ERROR_INITIALIZATION_FAILED: return "VK_ERROR_INITIALIZATION_FAILED";
+    case VK_TIMEOUT: return "VK_TIMEOUT";
+    default: return "VkResult " + std::to_string(result);
+  }
+}
+
+}  // namespace
+
 void vk_check(VkResult result, const char* what) {
   if (result != VK_SUCCESS)
-    throw VulkanError(std::string(what) + " failed (VkResult " + std::to_string(result) + ")");
+    throw VulkanError(std::string(what) + " failed (" + result_name(result) + ")", result);
 }
 
 std::vector<DeviceDescription> VulkanContext::list_devices() {
@@ -285,15 +303,26 @@ VkCommandBuffer VulkanContext::begin_one_shot() {
 }
 
 void VulkanContext::end_one_shot(VkCommandBuffer cmd) {
-  vk_check(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+  struct FreeOnExit {  // on every way out, failures included
+    VulkanContext& ctx;
+    VkCommandBuffer cmd;
+    ~FreeOnExit() { vkFreeCommandBuffers(ctx.device_, ctx.command_pool_, 1, &cmd); }
+  } free_on_exit{*this, cmd};
+  // A lost device stays lost: the driver answers every later submission so.
+  auto checked = [this](VkResult result, const char* what) {
+    if (result == VK_ERROR_DEVICE_LOST) lost_ = true;
+    vk_check(result, what);
+  };
+  if (lost_) checked(VK_ERROR_DEVICE_LOST, "vkQueueSubmit");
+  checked(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
   VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
   submit.commandBufferCount = 1;
   submit.pCommandBuffers = &cmd;
-  vk_check(vkResetFences(device_, 1, &fence_), "vkResetFences");
-  vk_check(vkQueueSubmit(queue_, 1, &submit, fence_), "vkQueueSubmit");
-  VkResult wait = vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX);
-  vkFreeCommandBuffers(device_, command_pool_, 1, &cmd);
-  vk_check(wait, "vkWaitForFences");
+  checked(vkResetFences(device_, 1, &fence_), "vkResetFences");
+  VkResult submitted = fault::next_submission();  // VK_SUCCESS unless a test injects a fault
+  if (submitted == VK_SUCCESS) submitted = vkQueueSubmit(queue_, 1, &submit, fence_);
+  checked(submitted, "vkQueueSubmit");
+  checked(vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
 }
 
 }  // namespace geodesic

@@ -15,10 +15,15 @@ namespace geodesic {
 
 class VulkanError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit VulkanError(const std::string& message, VkResult result = VK_ERROR_UNKNOWN)
+      : std::runtime_error(message), result_(result) {}
+  VkResult result() const { return result_; }
+
+ private:
+  VkResult result_;
 };
 
-// Throws VulkanError naming the call when a Vulkan function fails.
+// Throws VulkanError naming the call and the result when a Vulkan function fails.
 void vk_check(VkResult result, const char* what);
 
 // What `geodesic devices` prints and device selection decides on.
@@ -80,6 +85,10 @@ class VulkanContext {
 
   uint32_t find_memory_type(uint32_t type_bits, VkMemoryPropertyFlags wanted) const;
 
+  // True once a submission came back VK_ERROR_DEVICE_LOST: the device is gone for good (its
+  // objects may only be destroyed) and every later submission fails the same way.
+  bool lost() const { return lost_; }
+
   // Records commands into a fresh command buffer, submits and waits for completion.
   template <typename Record>
   void submit_and_wait(Record&& record) {
@@ -99,6 +108,7 @@ class VulkanContext {
   uint32_t queue_family_ = 0;
   VkCommandPool command_pool_ = VK_NULL_HANDLE;
   VkFence fence_ = VK_NULL_HANDLE;
+  bool lost_ = false;
   DeviceDescription description_;
   RayTracingFunctions rt_;
   VkPhysicalDeviceMemoryProperties memory_properties_{};

@@ -39,6 +39,7 @@ class DaemonProcess {
   DaemonProcess& operator=(const DaemonProcess&) = delete;
 
   uint16_t port() const { return port_; }
+  pid_t pid() const { return pid_; }  // -1 once ended
   // Sends `signal` and waits for the process to end; its wait status.
   int kill(int signal);
   std::string log() const;
@@ -78,6 +79,11 @@ class JobsApi {
   uint16_t port_;
   std::string token_;
 };
+
+// Whether a job's status is final (done, failed or cancelled).
+inline bool job_ended(const nlohmann::json& status) {
+  return status["state"] != "queued" && status["state"] != "running";
+}
 
 // What is wrong with `value` against proto/openapi.json's components/schemas/<name>.
 std::vector<std::string> openapi_errors(const nlohmann::json& value, const std::string& name);

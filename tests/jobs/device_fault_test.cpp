@@ -1,0 +1,97 @@
+// Vulkan faults under WebSocket sessions, injected (GEODESIC_FAULT: lavapipe cannot lose its
+// device or run out of device memory for real): three sessions render, one queue submission
+// fails as a driver would report it; the session it was for gets an `error` naming the Vulkan
+// error and the close 1011, the other two keep getting frames, a new session renders, and the
+// daemon stays up. After a device loss that means a new device under the surviving sessions.
+#include <algorithm>
+#include <memory>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "job_daemon.h"
+
+namespace geodesic::test {
+namespace {
+
+using nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+struct SessionEnd {
+  std::string error;  // the `error` message's text, if one came
+  Clock::time_point error_at;
+  uint16_t close_code = 0;
+  std::vector<Clock::time_point> frames;
+};
+
+// Reads one session's messages until its close or the deadline.
+void follow(WsClient& ws, Clock::time_point deadline, SessionEnd& end) {
+  try {
+    while (Clock::now() < deadline) {
+      const WsClient::Message message =
+          ws.read(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()));
+      if (message.binary) {
+        end.frames.push_back(Clock::now());
+      } else if (message.json["type"] == "error") {
+        end.error = message.json["message"];
+        end.error_at = Clock::now();
+        end.close_code = ws.read_until_close();
+        return;
+      }
+    }
+  } catch (const std::exception&) {  // the deadline
+  }
+}
+
+void one_session_fails(const std::string& fault, const std::string& vulkan_error) {
+  TempDir data;
+  // Three sessions at 64x48 submit about 25 times a second: the 300th submission comes seconds
+  // after all three are rendering.
+  DaemonProcess daemon(data.path() / "data", {}, {"GEODESIC_FAULT=" + fault + "@300"});
+  std::vector<std::unique_ptr<WsClient>> sessions;
+  for (int i = 0; i < 3; ++i) {
+    sessions.push_back(std::make_unique<WsClient>(daemon.port()));
+    sessions.back()->send({{"type", "settings"}, {"width", 64}, {"height", 48}});
+    sessions.back()->read_frame(60s);
+  }
+  std::vector<SessionEnd> ends(sessions.size());
+  std::vector<std::thread> threads;
+  const auto deadline = Clock::now() + 45s;
+  for (size_t i = 0; i < sessions.size(); ++i)
+    threads.emplace_back([&, i] { follow(*sessions[i], deadline, ends[i]); });
+  for (auto& thread : threads) thread.join();
+
+  int failed = 0;
+  Clock::time_point failure_seen;
+  for (const SessionEnd& end : ends)
+    if (!end.error.empty()) {
+      ++failed;
+      EXPECT_NE(end.error.find(vulkan_error), std::string::npos) << end.error;
+      EXPECT_EQ(end.close_code, 1011);
+      failure_seen = end.error_at;
+    }
+  ASSERT_EQ(failed, 1) << daemon.log();
+  for (const SessionEnd& end : ends)
+    if (end.error.empty()) {  // went on rendering after the failure
+      const auto after = std::count_if(end.frames.begin(), end.frames.end(),
+                                       [&](auto t) { return t > failure_seen; });
+      EXPECT_GE(after, 3) << daemon.log();
+    }
+
+  // The failed client reconnects and renders again.
+  WsClient again(daemon.port());
+  again.send({{"type", "settings"}, {"width", 64}, {"height", 48}});
+  EXPECT_EQ(again.read_frame(60s).info["width"], 64);
+  EXPECT_EQ(http_get(daemon.port(), "/healthz").result_int(), 200u);
+}
+
+TEST(DeviceFaults, DeviceLostClosesOneSessionTheOthersGoOnOnANewDevice) {
+  one_session_fails("device-lost", "VK_ERROR_DEVICE_LOST");
+}
+
+TEST(DeviceFaults, OutOfDeviceMemoryClosesOneSessionTheOthersGoOn) {
+  one_session_fails("oom", "VK_ERROR_OUT_OF_DEVICE_MEMORY");
+}
+
+}  // namespace
+}  // namespace geodesic::test
