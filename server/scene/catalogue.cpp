@@ -241,7 +241,7 @@ std::string catalogue_readme() {
       "all of them with the volume of the computed Dirichlet domain).\n\n"
       "Projective space, L(p, 1) and its mirror image L(p, p - 1) preserve a great circle, so no\n"
       "fundamental domain fits one gnomonic chart: their Dirichlet domains are cut into pieces\n"
-      "charted apart (server/scene/chart_atlas.h), up to 128; past eight, the renderer's cells\n"
+      "charted apart (server/scene/chart_atlas.h), up to 256; past eight, the renderer's cells\n"
       "share ray-mask bits and filter candidates by cell (docs/pipelines.md).\n\n"
       "| name | geometry | order | volume | Dirichlet domain | generators |\n"
       "|---|---|---|---|---|---|\n";

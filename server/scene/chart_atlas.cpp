@@ -12,11 +12,11 @@ namespace geodesic {
 namespace {
 
 constexpr auto kS3 = GeometryKind::Spherical;
-constexpr std::size_t kMaxPieceFaces = 64;
+constexpr std::size_t kMaxPieceFaces = 256;
 // Each piece is a cell of the renderer, with its own acceleration-structure instances; past
 // eight cells they share mask bits and the shaders filter candidates by cell
 // (SHARED_CELL_MASKS, docs/pipelines.md).
-constexpr std::size_t kMaxPieces = 128;
+constexpr std::size_t kMaxPieces = 256;
 
 double distance4(const Vec4& a, const Vec4& b) { return std::sqrt(dot(a - b, a - b)); }
 

@@ -126,7 +126,7 @@ TEST(LensSpaces, ClearErrors) {
 // more than eight past RP3 (the renderer's cells then share ray-mask bits).
 TEST(LensSpaces, GreatCircleGroupsAreChartedInPieces) {
   constexpr auto kS3 = GeometryKind::Spherical;
-  for (const auto& [p, q] : {std::pair{2, 1}, {3, 1}, {7, 1}, {6, 5}}) {
+  for (const auto& [p, q] : {std::pair{2, 1}, {3, 1}, {7, 1}, {6, 5}, {40, 1}}) {
     SCOPED_TRACE("L(" + std::to_string(p) + "," + std::to_string(q) + ")");
     const DirichletDomain d = dirichlet_domain(kS3, lens_space_generators(p, q));
     EXPECT_EQ(d.elements, static_cast<std::size_t>(p));
