@@ -96,6 +96,7 @@ TEST(WebSocket, BadMessagesGetAnErrorAndTheSessionGoesOn) {
   client.send(kSmallFrames);
   const std::pair<std::string, std::string> cases[] = {
       {"{not json", ""},
+      {R"({"type":"move","forward":1e400})", ""},  // number overflow: once ended the daemon
       {R"({"type":"jump"})", "type"},
       {R"({"type":"move","forward":"far"})", "forward"},
       {R"({"type":"settings","width":8})", "width"},
