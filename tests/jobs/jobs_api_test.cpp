@@ -175,6 +175,8 @@ TEST(JobsApi, BadRequestsNameTheField) {
     return changed.dump();
   };
   EXPECT_TRUE(starts(error_of("{\"scene\": "), "body: invalid JSON"));
+  // A number beyond double's range is out_of_range in nlohmann, not parse_error: was a 500.
+  EXPECT_TRUE(starts(error_of(R"({"scene": "furnace", "spp": 1e400})"), "body: invalid JSON"));
   EXPECT_TRUE(starts(error_of("[1, 2]"), "body: must be a JSON object"));
   EXPECT_TRUE(starts(error_of(with("colour", "red")), "colour: unknown field"));
   json no_scene = job;
