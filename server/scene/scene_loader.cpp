@@ -256,9 +256,9 @@ TriangleMesh read_box(const JsonNode& node) {
   return mesh;
 }
 
-TriangleMesh read_mesh(const JsonNode& node, const fs::path& base_dir) {
+TriangleMesh read_mesh(const JsonNode& node, const DocumentFiles& files) {
   const JsonNode file = node.at("file");
-  const fs::path path = base_dir / read_string(file);
+  const fs::path path = files.resolve(file);
   std::error_code error;
   if (!fs::is_regular_file(path, error)) file.fail("file not found: \"" + path.string() + "\"");
 
@@ -298,7 +298,7 @@ struct MaterialTable {
   }
 };
 
-void read_object(const JsonNode& node, const MaterialTable& materials, const fs::path& base_dir,
+void read_object(const JsonNode& node, const MaterialTable& materials, const DocumentFiles& files,
                  Scene& scene) {
   if (!node.value().is_object()) node.fail("must be an object");
   const JsonNode type_node = node.at("type");
@@ -337,7 +337,7 @@ void read_object(const JsonNode& node, const MaterialTable& materials, const fs:
   TriangleMesh mesh = type == "quad"      ? read_quad(node)
                       : type == "polygon" ? read_polygon(node)
                       : type == "box"     ? read_box(node)
-                                          : read_mesh(node, base_dir);
+                                          : read_mesh(node, files);
   mesh.material = material;
   scene.meshes.push_back(std::move(mesh));
 }
@@ -435,7 +435,7 @@ void check_inside_domain(const JsonNode& objects, const Scene& scene,
 
 }  // namespace
 
-Scene parse_scene(const Json& doc, const fs::path& base_dir) {
+Scene parse_scene(const Json& doc, const DocumentFiles& files) {
   const JsonNode root(doc, "");
   root.expect_object(
       {"name", "geometry", "manifold", "camera", "materials", "objects", "lights", "render"});
@@ -443,7 +443,7 @@ Scene parse_scene(const Json& doc, const fs::path& base_dir) {
   if (const auto name = root.find("name")) scene.name = read_string(*name);
   scene.geometry = read_geometry(root.at("geometry"));
   if (const auto manifold = root.find("manifold"))
-    scene.manifold = read_manifold(*manifold, scene.geometry, base_dir);
+    scene.manifold = read_manifold(*manifold, scene.geometry, files);
   scene.camera = read_camera(root.at("camera"), scene.geometry);
 
   MaterialTable table;
@@ -454,7 +454,7 @@ Scene parse_scene(const Json& doc, const fs::path& base_dir) {
     const std::size_t n = expect_list(*objects, 0, kMaxObjects, "an array of objects");
     std::vector<int> object_of_sphere, object_of_mesh;
     for (std::size_t i = 0; i < n; ++i) {
-      read_object((*objects)[i], table, base_dir, scene);
+      read_object((*objects)[i], table, files, scene);
       const bool tubes = read_string((*objects)[i].at("type")) == "domain_edges";
       object_of_sphere.resize(scene.spheres.size(), int(i));
       object_of_mesh.resize(scene.meshes.size(), tubes ? -1 : int(i));

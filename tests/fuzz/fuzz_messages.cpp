@@ -1,8 +1,8 @@
 // libFuzzer: any bytes as a client's WebSocket message and as raw HTTP request bytes, through
 // the daemon's handling that needs no device or socket.
 //   WebSocket: parse_client_message, then for `open` the scene it names (inline document or
-//   generator text) and the error message the client would get. Contract: ProtocolError or
-//   SceneError, nothing else.
+//   generator text, its files confined to the scene directory as on the daemon) and the error
+//   message the client would get. Contract: ProtocolError or SceneError, nothing else.
 //   HTTP: Beast's request parser with the daemon's body limit, then the token check and the
 //   static file lookup in web/. Contract: never a file from outside web/.
 #include <cstddef>
@@ -37,7 +37,7 @@ void client_message(std::string_view text) {
   try {
     parse_scene(open->document ? *open->document
                                : generator_text_scene(*open->generators, "generators"),
-                GEODESIC_SOURCE_DIR "/scenes");
+                DocumentFiles(GEODESIC_SOURCE_DIR "/scenes", /*confined=*/true));
   } catch (const SceneError& e) {
     error_message(service_error(e, open));
   }

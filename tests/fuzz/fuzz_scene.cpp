@@ -16,7 +16,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const Json doc = Json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (doc.is_discarded()) return -1;  // keeps it out of the corpus
   try {
-    geodesic::parse_scene(doc, GEODESIC_SOURCE_DIR "/scenes");
+    geodesic::parse_scene(doc, std::filesystem::path(GEODESIC_SOURCE_DIR "/scenes"));
   } catch (const geodesic::SceneError&) {
   }
   return 0;

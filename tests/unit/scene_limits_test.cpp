@@ -116,7 +116,7 @@ TEST(SceneLimits, DegenerateMeshTrianglesAreNeverSampled) {
                                                      "f 1 2 3\nf 1 2 2\nf 1 2 4\n";
   Json doc = patched(R"({"materials": {"lamp": {"emission": 1}}})");
   doc["objects"] = {{{"type", "mesh"}, {"material", "lamp"}, {"file", "degenerate.obj"}}};
-  const Scene scene = parse_scene(doc, dir);
+  const Scene scene = parse_scene(doc, fs::path(dir));
   ASSERT_EQ(scene.meshes.size(), 1u);
   EXPECT_EQ(scene.meshes[0].indices.size(), 9u);
   const EmitterTable table = build_emitters(scene);
@@ -126,6 +126,28 @@ TEST(SceneLimits, DegenerateMeshTrianglesAreNeverSampled) {
   EXPECT_NE(table.triangle_emitter.at(0).at(2), EmitterTable::kNone);
   EXPECT_FLOAT_EQ(table.emitters[0].cdf, 1.0f);
   fs::remove_all(dir);
+}
+
+// A document from a client (confined to the scene directory) cannot make the server read its
+// other files: a generator file's first token would come back in the error message.
+TEST(SceneLimits, ClientDocumentsNameOnlyFilesInTheSceneDirectory) {
+  const DocumentFiles confined(kSceneDocumentDir, /*confined=*/true);
+  const std::string outside = "must name a file inside the scene directory";
+  for (const char* name : {"/etc/passwd", "../CMakeLists.txt", "meshes/../../README.md",
+                           "/nonexistent/file.obj"}) {
+    Json doc = patched("{}");
+    doc["objects"] = {{{"type", "mesh"}, {"material", "red"}, {"file", name}}};
+    EXPECT_EQ(error_of_document(doc, confined), "objects[0].file: " + outside) << name;
+    doc = patched(R"({"objects": null})");
+    doc["manifold"] = {{"type", "generators"}, {"file", name}};
+    EXPECT_EQ(error_of_document(doc, confined), "manifold.file: " + outside) << name;
+  }
+  Json doc = patched("{}");
+  doc["objects"] = {{{"type", "mesh"}, {"material", "red"}, {"file", "meshes/octahedron.obj"}}};
+  EXPECT_EQ(parse_scene(doc, confined).meshes.size(), 1u);
+  // Trusted documents (files on disk) may still reach out, as the catalogue's scenes do.
+  doc["objects"][0]["file"] = "../scenes/meshes/octahedron.obj";
+  EXPECT_EQ(parse_scene(doc, kSceneDocumentDir).meshes.size(), 1u);
 }
 
 }  // namespace
