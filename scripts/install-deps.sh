@@ -59,6 +59,8 @@ fi
 # the machine has none (an existing one may not be Debian's).
 if [ "$mode" = --all ]; then
   packages+=(chromium)
+  # scripts/test-hardening.sh: clang with its sanitizer and libFuzzer runtimes.
+  packages+=(clang-14 libclang-rt-14-dev)
   { command -v node && command -v npm; } >/dev/null 2>&1 || packages+=(nodejs npm)
 fi
 

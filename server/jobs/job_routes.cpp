@@ -40,7 +40,7 @@ Response submit(const Request& request, JobQueue& queue) {
   Json body;
   try {
     body = Json::parse(request.body());
-  } catch (const Json::parse_error& e) {
+  } catch (const Json::exception& e) {  // parse_error, or out_of_range for 1e400
     return net::json_error(request, status::bad_request, std::string("body: invalid JSON: ") + e.what());
   }
   try {

@@ -90,7 +90,15 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
     return send(json_error(head, http::status::payload_too_large,
                            "body: larger than " + std::to_string(kMaxMessageBytes) + " bytes"));
   }
-  if (ec) return;  // timed out, reset, or not HTTP: just drop the connection
+  // Not HTTP (a NUL in the target, a malformed header): say so, then close. A timeout, a
+  // reset or a request cut short gets nothing: there is no one to answer.
+  if (ec.category() == http::make_error_code(http::error::bad_target).category() &&
+      ec != http::error::partial_message) {
+    Request head;
+    head.keep_alive(false);
+    return send(error_response(head, http::status::bad_request, "bad request: " + ec.message()));
+  }
+  if (ec) return;
 
   Request request = parser_->release();
   if (websocket::is_upgrade(request)) {

@@ -97,7 +97,7 @@ ClientMessage parse_client_message(std::string_view text, const ServiceLimits& l
   Json message;
   try {
     message = Json::parse(text);
-  } catch (const Json::parse_error& e) {
+  } catch (const Json::exception& e) {  // parse_error, or out_of_range for 1e400
     throw ProtocolError("", "invalid JSON: " + without_exception_id(e.what()));
   }
   if (!message.is_object()) throw ProtocolError("", "a message must be a JSON object");

@@ -354,7 +354,7 @@ Scene RenderService::load_bundled_scene(const std::string& name) const {
 }
 
 Scene RenderService::parse_scene_document(const nlohmann::ordered_json& document) const {
-  return parse_scene(document, impl_->scene_dir);
+  return parse_scene(document, DocumentFiles(impl_->scene_dir, /*confined=*/true));
 }
 
 SceneInfo RenderService::load_scene(SessionId id, const std::string& name) {

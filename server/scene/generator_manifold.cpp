@@ -7,14 +7,14 @@ namespace geodesic {
 namespace {
 
 // The generators and the field to blame for them.
-GeneratorSet read_set(const JsonNode& node, const std::filesystem::path& base_dir) {
+GeneratorSet read_set(const JsonNode& node, const DocumentFiles& files) {
   const auto file = node.find("file"), text = node.find("text"), matrices = node.find("matrices");
   if (int(bool(file)) + int(bool(text)) + int(bool(matrices)) != 1)
     node.fail("needs exactly one of \"file\", \"text\" or \"matrices\"");
   if (file) {
-    const std::string name = read_string(*file);
+    const std::filesystem::path path = files.resolve(*file);
     try {
-      return load_generator_file(base_dir / name);
+      return load_generator_file(path);
     } catch (const SceneError& e) {
       file->fail(e.what());  // "<path>: matrix <i> (line <l>): reason"
     }
@@ -29,7 +29,7 @@ GeneratorSet read_set(const JsonNode& node, const std::filesystem::path& base_di
 }  // namespace
 
 DirichletDomain read_generator_manifold(const JsonNode& node, const std::string& type,
-                                        GeometryKind kind, const std::filesystem::path& base_dir) {
+                                        GeometryKind kind, const DocumentFiles& files) {
   GeneratorSet set;
   if (type == "lens") {
     node.expect_object({"type", "p", "q", "base_point", "max_crossings"});
@@ -42,7 +42,7 @@ DirichletDomain read_generator_manifold(const JsonNode& node, const std::string&
     }
   } else {
     node.expect_object({"type", "file", "text", "matrices", "base_point", "max_crossings"});
-    set = read_set(node, base_dir);
+    set = read_set(node, files);
   }
   if (set.kind != kind)
     node.at("type").fail("the generators are isometries of " + std::string(geometry_name(set.kind)) +

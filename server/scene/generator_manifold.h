@@ -11,6 +11,7 @@
 
 #include "geometry/model.h"
 #include "scene/dirichlet_domain.h"
+#include "scene/document_files.h"
 #include "scene/json_path.h"
 
 namespace geodesic {
@@ -19,6 +20,6 @@ namespace geodesic {
 // unreadable file, malformed matrices, generators of another geometry than `kind`, or a group
 // whose Dirichlet domain cannot be built (see dirichlet_domain).
 DirichletDomain read_generator_manifold(const JsonNode& node, const std::string& type,
-                                        GeometryKind kind, const std::filesystem::path& base_dir);
+                                        GeometryKind kind, const DocumentFiles& files);
 
 }  // namespace geodesic

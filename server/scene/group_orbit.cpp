@@ -60,7 +60,7 @@ GroupOrbit::Key GroupOrbit::key(const Vec4& p, int corner) const {
     long long q = static_cast<long long>(std::floor(s));
     // Corner bit i: also look in the neighbouring cell nearest to the point.
     if (corner >> i & 1) q += s - std::floor(s) < 0.5 ? -1 : 1;
-    k = k * 1000003 + q;
+    k = k * 1000003 + static_cast<Key>(q);
   }
   return k;
 }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <unordered_map>
 #include <vector>
 
@@ -41,7 +42,7 @@ class GroupOrbit {
   double product_drift() const { return drift_; }
 
  private:
-  using Key = long long;
+  using Key = std::uint64_t;  // unsigned: the hash wraps around (signed overflow is undefined)
   Key key(const Vec4& p, int corner) const;
   void add(const Mat4& g, double limit);
 

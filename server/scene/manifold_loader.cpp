@@ -38,7 +38,7 @@ void require_geometry(const JsonNode& type, const std::string& name, GeometryKin
 }  // namespace
 
 Manifold read_manifold(const JsonNode& node, GeometryKind kind,
-                       const std::filesystem::path& base_dir) {
+                       const DocumentFiles& files) {
   if (node.value().is_null()) return {};
   if (!node.value().is_object()) node.fail("must be null or an object");
   const JsonNode type = node.at("type");
@@ -63,7 +63,7 @@ Manifold read_manifold(const JsonNode& node, GeometryKind kind,
     m = make_generic(kind, read_faces(node.at("faces")), kFileTolerance);
     validate_manifold(kind, m, kFileTolerance);
   } else if (name == "generators" || name == "lens") {
-    m = read_generator_manifold(node, name, kind, base_dir).manifold;
+    m = read_generator_manifold(node, name, kind, files).manifold;
   } else {
     type.fail("unknown manifold type \"" + name +
               "\" (expected \"none\", \"torus\", \"mirrored-dodecahedron\", "

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "geometry/model.h"
+#include "scene/document_files.h"
 #include "scene/json_path.h"
 #include "scene/manifold.h"
 
@@ -12,8 +13,8 @@ namespace geodesic {
 // `node` is the "manifold" value (null means no quotient; an absent field is the caller's
 // default-constructed Manifold). Throws SceneError naming the field: an unknown type, a type
 // for another geometry, malformed fields, or a generic domain that fails validate_manifold.
-// base_dir resolves a generator file's relative name.
+// `files` resolves a generator file's name.
 Manifold read_manifold(const JsonNode& node, GeometryKind kind,
-                       const std::filesystem::path& base_dir = {});
+                       const DocumentFiles& files = {});
 
 }  // namespace geodesic

@@ -24,6 +24,21 @@ using Json = nlohmann::ordered_json;
 // rounding of decimal input, far below anything a scene author means on purpose.
 constexpr double kDegenerate = 1e-6;
 
+// Far beyond any real scene (the bundled ones have at most 40 objects), and checked before an
+// element is read: a document of a million objects is refused rather than built, and a
+// polygon's convexity check (quadratic in its vertices) stays instant.
+constexpr std::size_t kMaxObjects = 10000, kMaxLights = 1000, kMaxPolygonVertices = 1000;
+
+// Requires an array of [min_size, max_size] elements; returns its size.
+std::size_t expect_list(const JsonNode& node, std::size_t min_size, std::size_t max_size,
+                        const std::string& what) {
+  const std::size_t n = node.expect_array(min_size, what);
+  if (n > max_size)
+    node.fail("has " + std::to_string(n) + " elements; at most " + std::to_string(max_size) +
+              " are allowed");
+  return n;
+}
+
 Vec3 rotate(const Mat4& r, const Vec3& v) { return (r * Vec4(v, 0)).xyz(); }
 
 Mat4 frame(const Vec3& x, const Vec3& y, const Vec3& z, const Vec3& origin) {
@@ -168,7 +183,8 @@ TriangleMesh read_quad(const JsonNode& node) {
 // A planar, strictly convex polygon as a triangle fan; the vertex order sets the front side.
 TriangleMesh read_polygon(const JsonNode& node) {
   const JsonNode list = node.at("vertices");
-  const std::size_t n = list.expect_array(3, "an array of at least 3 points");
+  const std::size_t n =
+      expect_list(list, 3, kMaxPolygonVertices, "an array of at least 3 points");
   std::vector<Vec3> vertices;
   for (std::size_t i = 0; i < n; ++i) vertices.push_back(read_vec3(list[i]));
 
@@ -240,9 +256,9 @@ TriangleMesh read_box(const JsonNode& node) {
   return mesh;
 }
 
-TriangleMesh read_mesh(const JsonNode& node, const fs::path& base_dir) {
+TriangleMesh read_mesh(const JsonNode& node, const DocumentFiles& files) {
   const JsonNode file = node.at("file");
-  const fs::path path = base_dir / read_string(file);
+  const fs::path path = files.resolve(file);
   std::error_code error;
   if (!fs::is_regular_file(path, error)) file.fail("file not found: \"" + path.string() + "\"");
 
@@ -282,7 +298,7 @@ struct MaterialTable {
   }
 };
 
-void read_object(const JsonNode& node, const MaterialTable& materials, const fs::path& base_dir,
+void read_object(const JsonNode& node, const MaterialTable& materials, const DocumentFiles& files,
                  Scene& scene) {
   if (!node.value().is_object()) node.fail("must be an object");
   const JsonNode type_node = node.at("type");
@@ -321,7 +337,7 @@ void read_object(const JsonNode& node, const MaterialTable& materials, const fs:
   TriangleMesh mesh = type == "quad"      ? read_quad(node)
                       : type == "polygon" ? read_polygon(node)
                       : type == "box"     ? read_box(node)
-                                          : read_mesh(node, base_dir);
+                                          : read_mesh(node, files);
   mesh.material = material;
   scene.meshes.push_back(std::move(mesh));
 }
@@ -419,7 +435,7 @@ void check_inside_domain(const JsonNode& objects, const Scene& scene,
 
 }  // namespace
 
-Scene parse_scene(const Json& doc, const fs::path& base_dir) {
+Scene parse_scene(const Json& doc, const DocumentFiles& files) {
   const JsonNode root(doc, "");
   root.expect_object(
       {"name", "geometry", "manifold", "camera", "materials", "objects", "lights", "render"});
@@ -427,7 +443,7 @@ Scene parse_scene(const Json& doc, const fs::path& base_dir) {
   if (const auto name = root.find("name")) scene.name = read_string(*name);
   scene.geometry = read_geometry(root.at("geometry"));
   if (const auto manifold = root.find("manifold"))
-    scene.manifold = read_manifold(*manifold, scene.geometry, base_dir);
+    scene.manifold = read_manifold(*manifold, scene.geometry, files);
   scene.camera = read_camera(root.at("camera"), scene.geometry);
 
   MaterialTable table;
@@ -435,10 +451,10 @@ Scene parse_scene(const Json& doc, const fs::path& base_dir) {
   for (uint32_t i = 0; i < scene.materials.size(); ++i) table.index[scene.materials[i].name] = i;
 
   if (const auto objects = root.find("objects")) {
-    const std::size_t n = objects->expect_array(0, "an array of objects");
+    const std::size_t n = expect_list(*objects, 0, kMaxObjects, "an array of objects");
     std::vector<int> object_of_sphere, object_of_mesh;
     for (std::size_t i = 0; i < n; ++i) {
-      read_object((*objects)[i], table, base_dir, scene);
+      read_object((*objects)[i], table, files, scene);
       const bool tubes = read_string((*objects)[i].at("type")) == "domain_edges";
       object_of_sphere.resize(scene.spheres.size(), int(i));
       object_of_mesh.resize(scene.meshes.size(), tubes ? -1 : int(i));
@@ -447,7 +463,7 @@ Scene parse_scene(const Json& doc, const fs::path& base_dir) {
       check_inside_domain(*objects, scene, object_of_sphere, object_of_mesh);
   }
   if (const auto lights = root.find("lights")) {
-    const std::size_t n = lights->expect_array(0, "an array of lights");
+    const std::size_t n = expect_list(*lights, 0, kMaxLights, "an array of lights");
     for (std::size_t i = 0; i < n; ++i) scene.lights.push_back(read_light((*lights)[i]));
   }
   if (const auto render = root.find("render")) scene.render = read_render(*render);

@@ -5,14 +5,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include "scene/document_files.h"
 #include "scene/scene.h"
 
 namespace geodesic {
 
-// base_dir resolves relative mesh file names. Throws SceneError naming the field and reason.
+// `files` resolves mesh and generator file names (a directory, or one confined to it for
+// documents from clients). Throws SceneError naming the field and reason.
 // Takes ordered_json because material indices follow document order; a plain
 // nlohmann::json converts implicitly but has already sorted its keys.
-Scene parse_scene(const nlohmann::ordered_json& doc, const std::filesystem::path& base_dir);
+Scene parse_scene(const nlohmann::ordered_json& doc, const DocumentFiles& files);
 // Also throws SceneError for an unreadable file or invalid JSON (with the parse position).
 Scene load_scene_file(const std::filesystem::path& path);
 

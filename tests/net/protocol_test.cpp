@@ -76,6 +76,18 @@ TEST(Protocol, NamesTheFieldOfABadMessage) {
   EXPECT_EQ(field_of_error(R"({"type":"open","scene":"a","generators":"1"})"), "generators");
 }
 
+// nlohmann throws out_of_range, not parse_error, for a number beyond double's range; it
+// escaped parse_client_message and, on the daemon, ended the I/O thread (std::terminate).
+TEST(Protocol, NumberOverflowIsInvalidJson) {
+  try {
+    parse_client_message(R"({"type":"move","forward":1e400})", ServiceLimits{});
+    ADD_FAILURE() << "accepted";
+  } catch (const ProtocolError& e) {
+    EXPECT_EQ(e.field(), "");
+    EXPECT_EQ(std::string(e.what()), "invalid JSON: number overflow parsing '1e400'");
+  }
+}
+
 TEST(Protocol, MapsServiceErrorsToPathsInTheMessage) {
   const OpenRequest by_name{"nowhere", std::nullopt};
   const OpenRequest inline_document{std::nullopt, json::object()};

@@ -96,6 +96,7 @@ TEST(WebSocket, BadMessagesGetAnErrorAndTheSessionGoesOn) {
   client.send(kSmallFrames);
   const std::pair<std::string, std::string> cases[] = {
       {"{not json", ""},
+      {R"({"type":"move","forward":1e400})", ""},  // number overflow: once ended the daemon
       {R"({"type":"jump"})", "type"},
       {R"({"type":"move","forward":"far"})", "forward"},
       {R"({"type":"settings","width":8})", "width"},
@@ -105,6 +106,10 @@ TEST(WebSocket, BadMessagesGetAnErrorAndTheSessionGoesOn) {
           "materials":{"m":{"diffuse":0.5}},
           "objects":[{"type":"sphere","material":"m","center":[0,0,0],"radius":-1}]}})",
        "document.objects[0].radius"},
+      // Outside the scene directory: once answered with the file's first token.
+      {R"({"type":"open","document":{"geometry":"euclidean","camera":{"position":[0,0,3]},
+          "manifold":{"type":"generators","file":"/etc/passwd"}}})",
+       "document.manifold.file"},
   };
   for (const auto& [text, field] : cases) {
     ASSERT_FALSE(client.send_raw(text));

@@ -32,9 +32,10 @@ inline Scene parse_patched(const std::string& patch) {
   return parse_scene(patched(patch), kSceneDocumentDir);
 }
 
-inline std::string error_of_document(const nlohmann::ordered_json& doc) {
+inline std::string error_of_document(const nlohmann::ordered_json& doc,
+                                     const DocumentFiles& files = kSceneDocumentDir) {
   try {
-    parse_scene(doc, kSceneDocumentDir);
+    parse_scene(doc, files);
   } catch (const SceneError& e) {
     return e.what();
   }

@@ -343,16 +343,16 @@ TEST(SceneLoader, ObjectsMustLieInsideTheFundamentalDomain) {
       "objects": [{"type": "sphere", "material": "m", "center": [0, 0, 0], "radius": 0.5}, )" +
                                          object + "]}");
   };
-  EXPECT_NO_THROW(parse_scene(doc(R"({"type": "sphere", "material": "m", "center": [0.4, 0, 0], "radius": 0.5})"), "."));
+  EXPECT_NO_THROW(parse_scene(doc(R"({"type": "sphere", "material": "m", "center": [0.4, 0, 0], "radius": 0.5})"), fs::path(".")));
   try {
-    parse_scene(doc(R"({"type": "sphere", "material": "m", "center": [0.6, 0, 0], "radius": 0.5})"), ".");
+    parse_scene(doc(R"({"type": "sphere", "material": "m", "center": [0.6, 0, 0], "radius": 0.5})"), fs::path("."));
     FAIL() << "no error";
   } catch (const SceneError& e) {
     EXPECT_EQ(std::string(e.what()),
               "objects[1]: must lie inside the fundamental domain (it crosses face 0)");
   }
   try {
-    parse_scene(doc(R"({"type": "quad", "material": "m", "corner": [0, 0, 0], "edge_u": [2, 0, 0], "edge_v": [0, 0.5, 0]})"), ".");
+    parse_scene(doc(R"({"type": "quad", "material": "m", "corner": [0, 0, 0], "edge_u": [2, 0, 0], "edge_v": [0, 0.5, 0]})"), fs::path("."));
     FAIL() << "no error";
   } catch (const SceneError& e) {
     EXPECT_EQ(std::string(e.what()),
@@ -376,11 +376,11 @@ TEST(SceneLoader, CameraMayBeGivenAsAnIsometryMatrix) {
   const std::string boost = "[[" + std::to_string(c) + ", 0, 0, " + std::to_string(s) +
                             "], [0, 1, 0, 0], [0, 0, 1, 0], [" + std::to_string(s) + ", 0, 0, " +
                             std::to_string(c) + "]]";
-  const Scene scene = parse_scene(doc(boost), ".");
+  const Scene scene = parse_scene(doc(boost), fs::path("."));
   EXPECT_NEAR(scene.camera.pose.m[0][3], s, 1e-6);
   EXPECT_LT(model::isometry_error(GeometryKind::Hyperbolic, scene.camera.pose), 1e-12);
   try {
-    parse_scene(doc("[[1, 0, 0, 0.5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]"), ".");
+    parse_scene(doc("[[1, 0, 0, 0.5], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]"), fs::path("."));
     FAIL() << "no error";
   } catch (const SceneError& e) {
     EXPECT_EQ(std::string(e.what()).rfind("camera.pose: not an isometry of hyperbolic space (error ", 0), 0u)
