@@ -42,6 +42,21 @@ constexpr auto kJobInterval = 2s;
 // every 10 s is printed: a slow leak shows there before it reaches the bound.
 constexpr long kMaxPeakRssKiB = 1536 * 1024;
 
+// Under AddressSanitizer (scripts/test-hardening.sh) the daemon also carries shadow memory,
+// redzones and a quarantine of freed blocks: the bound above is for the build users run, and
+// the sanitized run prints the figure without holding it to that bound.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+
 int env_int(const char* name, int fallback) {
   const char* value = std::getenv(name);
   return value && *value ? std::atoi(value) : fallback;
@@ -248,7 +263,7 @@ TEST(Load, FiftyWalkingSessionsAndAJobStreamForTwoMinutes) {
   std::printf("daemon RSS:               peak (VmHWM) %.0f MiB; every 10 s:", peak / 1024.0);
   for (long rss : rss_every_10s) std::printf(" %.0f", rss / 1024.0);
   std::printf(" MiB\n");
-  EXPECT_LT(peak, kMaxPeakRssKiB);
+  if (!kAddressSanitizer) EXPECT_LT(peak, kMaxPeakRssKiB);
   EXPECT_GT(latencies.size(), size_t(sessions));  // the sessions did walk
 }
 
