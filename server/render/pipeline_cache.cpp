@@ -79,15 +79,6 @@ void PipelineCache::reset_driver_cache() {
   driver_cache_ = fresh;
 }
 
-CompiledShader PipelineCache::source(const std::string& entry, const PipelineFeatures& features) {
-  return compile_shader(entry, features.defines());
-}
-
-Spirv PipelineCache::spirv(const std::string& entry, const PipelineFeatures& features) {
-  std::lock_guard lock(mutex_);
-  return spirv_locked(entry, features);
-}
-
 Spirv PipelineCache::spirv_locked(const std::string& entry, const PipelineFeatures& features) {
   const std::string name = entry + "\n" + joined(features.defines(), "\n") + "\n" +
                            shader_sources_digest();

@@ -55,11 +55,6 @@ class PipelineCache {
   // driver's cache saved there before. Empty: memory only.
   void set_directory(const std::filesystem::path& dir);
 
-  // The SPIR-V of shaders/<entry> under `features`: from memory, the directory or glslang.
-  Spirv spirv(const std::string& entry, const PipelineFeatures& features);
-  // The preprocessed GLSL and SPIR-V, compiled afresh (--dump-shaders).
-  static CompiledShader source(const std::string& entry, const PipelineFeatures& features);
-
   // Builds the pipeline from its entries' SPIR-V (in order), with the layout and the driver's
   // cache given.
   using Builder =
@@ -77,6 +72,7 @@ class PipelineCache {
   void forget_pipelines();
 
  private:
+  // The SPIR-V of shaders/<entry> under `features`: from memory, the directory or glslang.
   Spirv spirv_locked(const std::string& entry, const PipelineFeatures& features);
   void save_driver_cache();
   void reset_driver_cache();

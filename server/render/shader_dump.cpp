@@ -3,6 +3,8 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "render/shader_compiler.h"
+
 namespace geodesic {
 namespace {
 
@@ -29,7 +31,7 @@ std::vector<std::filesystem::path> dump_shaders(const Renderer& renderer,
   written.push_back(dir / "features.txt");
   write(written.back(), summary.data(), summary.size());
   for (const auto& entry : renderer.backend().entries()) {
-    const CompiledShader shader = PipelineCache::source(entry, features);
+    const CompiledShader shader = compile_shader(entry, features.defines());
     const std::string name = std::filesystem::path(entry).filename().string();
     written.push_back(dir / (name + ".glsl"));
     write(written.back(), shader.glsl.data(), shader.glsl.size());
