@@ -19,7 +19,8 @@ const char* kUsage =
     "  render SCENE.json -o OUT.{png,exr,jpg} [--spp N | --time SECONDS | --target-error E]\n"
     "         [--report FILE.json] [--width W] [--height H] [--max-depth D] [--seed S]\n"
     "         [--device NAME|INDEX] [--lighting physical|paper]\n"
-    "         [--backend auto|ray-query|pipeline]\n"
+    "         [--backend auto|ray-query|pipeline] [--dump-shaders DIR]\n"
+    "         [--pipeline specialised|all-features] [--pipeline-cache DIR]\n"
     "  render --generators FILE.gen -o OUT ...  the same options, rendering a default scene\n"
     "                inside the space of a generator file (Curved Spaces .gen or SnapPy)\n"
     "  catalogue [ROOT]  write the manifold catalogue (ROOT/catalogue/*.gen, README.md and\n"
@@ -39,6 +40,11 @@ int main(int argc, char** argv) {
     return argc < 2 ? 2 : 0;
   }
   const std::string command = argv[1];
+  for (int i = 2; i < argc; ++i)
+    if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
+      std::fputs(kUsage, stdout);
+      return 0;
+    }
   try {
     if (command == "render") return geodesic::render_command(argc - 2, argv + 2);
     if (command == "devices") return geodesic::devices_command(argc - 2, argv + 2);

@@ -75,6 +75,14 @@ CatalogueEntry binary_dihedral(int n) {
                    4 * n);
 }
 
+CatalogueEntry mirrored_lens(int n) {
+  return {"mirrored-lens-" + std::to_string(n),
+          "Mirrored lens, dihedral angle 2 pi / " + std::to_string(n) + " (orbifold)", kS3,
+          "reflections in the two great spheres through the xy great circle at angles +-pi / " +
+              std::to_string(n) + " from the w axis (mirrored_lens_generators)",
+          mirrored_lens_generators(n), n, 2 * kPi * kPi / n, true};
+}
+
 std::vector<CatalogueEntry> build() {
   const double s3 = std::sqrt(3.0), hex_area = 2 * s3;
   std::vector<CatalogueEntry> c;
@@ -134,6 +142,8 @@ std::vector<CatalogueEntry> build() {
                              {9, 2}, {11, 3}, {12, 5}})
     c.push_back(lens(p, q));
   // -I preserves every great circle: the domain is cut into pieces (chart_atlas.h).
+  // Mirrors through one great circle: their lune, too, is charted in pieces.
+  for (int n : {4, 6}) c.push_back(mirrored_lens(n));
   c.push_back(spherical("projective-space", "Projective 3-space RP3 = L(2,1)",
                         "the antipodal map -I", {left_multiplication(-1, 0, 0, 0)}, 2));
 
@@ -212,6 +222,20 @@ std::vector<Mat4> lens_space_generators(int p, int q) {
   return {g};
 }
 
+std::vector<Mat4> mirrored_lens_generators(int n) {
+  if (n < 4 || n % 2)
+    throw SceneError("mirrored lens: n must be even and at least 4 (the mirrors meet at 2 pi / n), not " +
+                     std::to_string(n));
+  auto mirror = [](double angle) {  // through the xy plane and the direction w cos + z sin
+    const double u[2] = {std::cos(angle), -std::sin(angle)};  // its unit normal in (z, w)
+    Mat4 g = Mat4::identity();
+    for (int r = 0; r < 2; ++r)
+      for (int c = 0; c < 2; ++c) g.m[2 + r][2 + c] -= 2 * u[r] * u[c];
+    return g;
+  };
+  return {mirror(kPi / n), mirror(-kPi / n)};
+}
+
 const std::vector<CatalogueEntry>& catalogue() {
   static const std::vector<CatalogueEntry> entries = build();
   return entries;
@@ -239,10 +263,11 @@ std::string catalogue_readme() {
       "Volumes: flat spaces, the translation lattice's covolume over the holonomy's order;\n"
       "spherical ones, 2 pi^2 / |Gamma|; hyperbolic ones, published values (the tests compare\n"
       "all of them with the volume of the computed Dirichlet domain).\n\n"
-      "Projective space, L(p, 1) and its mirror image L(p, p - 1) preserve a great circle, so no\n"
-      "fundamental domain fits one gnomonic chart: their Dirichlet domains are cut into pieces\n"
-      "charted apart (server/scene/chart_atlas.h), up to 256; past eight, the renderer's cells\n"
-      "share ray-mask bits and filter candidates by cell (docs/pipelines.md).\n\n"
+      "Projective space, L(p, 1), its mirror image L(p, p - 1) and the mirrored lenses preserve\n"
+      "a great circle, so no fundamental domain fits one gnomonic chart: their Dirichlet domains\n"
+      "are cut into pieces charted apart (server/scene/chart_atlas.h), up to 256; past eight,\n"
+      "the renderer's cells share ray-mask bits and filter candidates by cell\n"
+      "(docs/pipelines.md).\n\n"
       "| name | geometry | order | volume | Dirichlet domain | generators |\n"
       "|---|---|---|---|---|---|\n";
   for (const CatalogueEntry& e : catalogue()) {

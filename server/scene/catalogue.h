@@ -34,6 +34,11 @@ const CatalogueEntry* find_catalogue_entry(const std::string& name);
 // 2 pi q / p. Throws SceneError unless p >= 2 and gcd(p, q) = 1.
 std::vector<Mat4> lens_space_generators(int p, int q);
 
+// The mirrored lens of dihedral angle 2 pi / n (an orbifold): reflections in the two great
+// spheres through the xy great circle at angles +-pi / n from the w axis, generating the
+// dihedral group of order n. Throws SceneError unless n is even and at least 4.
+std::vector<Mat4> mirrored_lens_generators(int n);
+
 // Unit quaternion a + b i + c j + d k as the S3 isometry x -> q x (x = w + x i + y j + z k).
 Mat4 left_multiplication(double a, double b, double c, double d);
 

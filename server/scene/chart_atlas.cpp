@@ -35,6 +35,11 @@ std::optional<ChartPlane> chart_plane(const Mat4& p, const Vec4& m) {
   return ChartPlane{q.xyz() / s, -q.w / s};
 }
 
+bool same_plane(const ChartPlane& a, const ChartPlane& b, double tolerance) {
+  return dot(a.normal, b.normal) > 1 - tolerance &&
+         std::abs(a.delta - b.delta) < tolerance * std::max(1.0, std::abs(a.delta));
+}
+
 // A candidate plane of a piece: a Voronoi wall (towards centre `index`) or the bisector of the
 // origin and element `index` (a face of D).
 struct Wall {
@@ -79,11 +84,28 @@ std::optional<Piece> make_piece(const std::vector<GroupElement>& elements,
     if (plane) walls.push_back({*plane, false, i});
     else if ((piece.frame * m).w > 0) return std::nullopt;  // the whole chart lies outside D
   }
+  // A mirror r of the group is also the Voronoi wall between s and r s. If D lies on s's side
+  // the face must carry r's gluing, so the Voronoi copy of the plane goes; if it lies beyond,
+  // the piece would be flat.
+  for (const Wall& b : walls)
+    for (const Wall& v : walls)
+      if (!b.voronoi && v.voronoi && same_plane(b.plane, {-v.plane.normal, -v.plane.delta}, tolerance))
+        return std::nullopt;
+  std::erase_if(walls, [&](const Wall& v) {
+    return v.voronoi && std::any_of(walls.begin(), walls.end(), [&](const Wall& b) {
+             return !b.voronoi && same_plane(v.plane, b.plane, tolerance);
+           });
+  });
   std::sort(walls.begin(), walls.end(),
             [](const Wall& a, const Wall& b) { return a.plane.delta < b.plane.delta; });
   std::vector<ChartPlane> planes;
   for (const Wall& w : walls) planes.push_back(w.plane);
   const ClippedPolyhedron clipped = clip_planes(planes, tolerance, INFINITY, kMaxPieceFaces);
+  if (!clipped.polyhedron.bounded && clipped.kept.size() >= kMaxPieceFaces)
+    throw SceneError("generators: a chart piece of the domain needs more than " +
+                     std::to_string(kMaxPieceFaces) + " faces (the group has " +
+                     std::to_string(elements.size()) + " elements and preserves a great circle); " +
+                     "a smaller group renders");
   if (!clipped.polyhedron.bounded || clipped.polyhedron.vertices.size() < 4) return std::nullopt;
   piece.polyhedron = clipped.polyhedron;
   for (int k : clipped.kept) piece.walls.push_back(walls[k]);
@@ -127,13 +149,12 @@ Manifold chart_atlas_manifold(const std::vector<GroupElement>& elements, double 
     if (auto piece = make_piece(elements, centres, c, tolerance)) {
       piece_of[c] = static_cast<int>(pieces.size());
       pieces.push_back(std::move(*piece));
+      if (pieces.size() > kMaxPieces)
+        throw SceneError("generators: the domain needs more than " + std::to_string(kMaxPieces) +
+                         " chart pieces (the group preserves a great circle, so no single chart "
+                         "holds its domain), and the renderer keeps at most " +
+                         std::to_string(kMaxPieces) + " cells");
     }
-
-  if (pieces.size() > kMaxPieces)
-    throw SceneError("generators: the domain needs " + std::to_string(pieces.size()) +
-                     " chart pieces (the group preserves a great circle, so no single chart "
-                     "holds its domain); the renderer keeps at most " +
-                     std::to_string(kMaxPieces) + " cells");
   Manifold m;
   m.name = "generators";
   std::vector<int> first_face;
@@ -164,6 +185,10 @@ Manifold chart_atlas_manifold(const std::vector<GroupElement>& elements, double 
         const int centre = find_point(centres, model::normalize_point(kS3, g * centres[pieces[p].centre]));
         target = centre >= 0 ? piece_of[centre] : -1;
         if (target >= 0 && inverse >= 0) partner = face_of(target, false, inverse);
+        // A mirror's piece faces the mirror image of its centre, which has no piece (its
+        // Voronoi cell lies beyond the mirror): the reflection glues the face to itself.
+        if (partner < 0 && inverse == w.index && mismatch(pieces[p], int(k), pieces[p], int(k), g) <= 100 * tolerance)
+          target = int(p), partner = int(k);
         if (std::find(domain_faces.begin(), domain_faces.end(), w.index) == domain_faces.end())
           domain_faces.push_back(w.index);
       }

@@ -18,9 +18,10 @@ namespace geodesic {
 
 // `elements`: the whole finite group (identity first, trivial stabiliser of the origin); D is
 // its Dirichlet domain around the origin. Returns the manifold with `pieces` filled, `faces`
-// D's faces, `domain` empty. Throws SceneError ("generators: ...") when more than 8 pieces are
-// needed (the renderer's cell limit: projective space needs 7, L(p, 1) about 20), a piece's
-// face has no partner, or a pairing misses its partner face by more than 100 x `tolerance`.
+// D's faces, `domain` empty. A mirror's pieces are glued to themselves. Throws SceneError
+// ("generators: ...") when more than 256 pieces, or a piece of more than 256 faces, would be
+// needed (L(p, 1) past p of about 150), a piece's face has no partner, or a pairing misses its
+// partner face by more than 100 x `tolerance`.
 Manifold chart_atlas_manifold(const std::vector<GroupElement>& elements, double tolerance);
 
 }  // namespace geodesic

@@ -237,6 +237,17 @@ TEST(Cli, GeneratorsRenderTheDefaultSceneInsideTheirSpace) {
       << both.output;
 }
 
+// --help after any command prints the usage and does nothing else.
+TEST(Cli, HelpAfterAnyCommandPrintsTheUsage) {
+  for (const std::string command : {"render", "serve", "catalogue", "devices"}) {
+    const CliRun r = run_cli(command + " --help");
+    EXPECT_EQ(r.exit_code, 0) << command << "\n" << r.output;
+    EXPECT_NE(r.output.find("render --generators FILE.gen"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("--pipeline-cache DIR"), std::string::npos) << r.output;
+  }
+  EXPECT_FALSE(std::filesystem::exists("--help"));
+}
+
 // `geodesic catalogue` writes exactly the committed catalogue and its scenes.
 TEST(Cli, CatalogueWritesTheCommittedFiles) {
   const auto root = temp_file("-catalogue");

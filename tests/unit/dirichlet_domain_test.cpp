@@ -121,39 +121,57 @@ TEST(LensSpaces, ClearErrors) {
   EXPECT_THROW(lens_space_generators(1, 0), SceneError);
 }
 
+// The pieces of a domain charted apart lie within pi / 3 of their centres, and their gluings
+// are mutual: the partner's partner is the face, the pairings inverse.
+void expect_atlas_glued(const DirichletDomain& d) {
+  ASSERT_GE(d.manifold.pieces.size(), 2u);
+  EXPECT_TRUE(d.manifold.domain.vertices.empty());
+  std::vector<const PieceFace*> all;
+  for (const DomainPiece& piece : d.manifold.pieces) {
+    for (const Vec3& v : piece.polyhedron.vertices) EXPECT_LE(length(v), std::sqrt(3.0) + 1e-9);
+    for (const PieceFace& f : piece.faces) all.push_back(&f);
+  }
+  for (std::size_t f = 0; f < all.size(); ++f) {
+    const PieceFace& back = *all[all[f]->partner];
+    EXPECT_EQ(back.partner, static_cast<int>(f));
+    const Mat4 loop = back.pairing * all[f]->pairing;
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) EXPECT_NEAR(loop.m[r][c], r == c ? 1 : 0, 1e-12);
+  }
+}
+
 // Projective space, L(p, 1) and L(p, p - 1) preserve a great circle: no domain fits one
 // gnomonic chart, so the Dirichlet domain is cut into pieces charted apart (chart_atlas.h),
 // more than eight past RP3 (the renderer's cells then share ray-mask bits).
 TEST(LensSpaces, GreatCircleGroupsAreChartedInPieces) {
-  constexpr auto kS3 = GeometryKind::Spherical;
   for (const auto& [p, q] : {std::pair{2, 1}, {3, 1}, {7, 1}, {6, 5}, {40, 1}}) {
     SCOPED_TRACE("L(" + std::to_string(p) + "," + std::to_string(q) + ")");
-    const DirichletDomain d = dirichlet_domain(kS3, lens_space_generators(p, q));
+    const DirichletDomain d = dirichlet_domain(GeometryKind::Spherical, lens_space_generators(p, q));
     EXPECT_EQ(d.elements, static_cast<std::size_t>(p));
     EXPECT_NEAR(d.volume, 2 * kPi * kPi / p, 1e-9);
-    ASSERT_GE(d.manifold.pieces.size(), 2u);
-    EXPECT_TRUE(d.manifold.domain.vertices.empty());
     EXPECT_NEAR(d.inradius, kPi / p, 1e-12);  // the orbit of the origin is a great circle
     EXPECT_LT(d.isometry_error, 1e-14);
-    int faces = 0;
-    for (const DomainPiece& piece : d.manifold.pieces) {
-      for (const Vec3& v : piece.polyhedron.vertices)
-        EXPECT_LE(length(v), std::sqrt(3.0) + 1e-9);  // within pi / 3 of the piece's centre
-      faces += static_cast<int>(piece.faces.size());
-    }
-    // Gluings are mutual: the partner's partner is the face, the pairings inverse.
-    std::vector<const PieceFace*> all;
-    for (const DomainPiece& piece : d.manifold.pieces)
-      for (const PieceFace& f : piece.faces) all.push_back(&f);
-    ASSERT_EQ(static_cast<int>(all.size()), faces);
-    for (int f = 0; f < faces; ++f) {
-      const PieceFace& back = *all[all[f]->partner];
-      EXPECT_EQ(back.partner, f);
-      const Mat4 loop = back.pairing * all[f]->pairing;
-      for (int r = 0; r < 4; ++r)
-        for (int c = 0; c < 4; ++c) EXPECT_NEAR(loop.m[r][c], r == c ? 1 : 0, 1e-12);
-    }
+    expect_atlas_glued(d);
   }
+}
+
+// The mirrored lenses fix a great circle pointwise: their lune is charted in pieces too, and
+// the pieces of its two mirror faces are glued to themselves by the reflections.
+TEST(LensSpaces, MirroredLensesGlueMirrorPiecesToThemselves) {
+  for (int n : {4, 6, 8, 24}) {
+    SCOPED_TRACE("mirrored lens " + std::to_string(n));
+    const DirichletDomain d = dirichlet_domain(GeometryKind::Spherical, mirrored_lens_generators(n));
+    EXPECT_EQ(d.elements, static_cast<std::size_t>(n));
+    EXPECT_NEAR(d.volume, 2 * kPi * kPi / n, 1e-9);
+    EXPECT_NEAR(d.inradius, kPi / n, 1e-12);  // half the lune's angle 2 pi / n
+    expect_atlas_glued(d);
+    int self_glued = 0, faces = 0;
+    for (const DomainPiece& piece : d.manifold.pieces)
+      for (const PieceFace& f : piece.faces) self_glued += f.partner == faces++;
+    EXPECT_GE(self_glued, 2) << "each mirror holds at least one piece's face";
+  }
+  EXPECT_THROW(mirrored_lens_generators(5), SceneError);
+  EXPECT_THROW(mirrored_lens_generators(2), SceneError);
 }
 
 TEST(DirichletDomain, BasePointMovesTheDomainNotTheSpace) {
@@ -191,8 +209,8 @@ TEST(DirichletDomain, NonCompactAndEmptyInputs) {
 
 // Curved Spaces' files: every one parses and gives a valid domain whose volume matches the
 // group order (S3) or the known volume (H3); the lenses that preserve a great circle too, in
-// chart pieces. The mirrored lenses (orientation-reversing elements that preserve the circle)
-// are refused: the chart atlas cannot glue their pieces yet, and says so.
+// chart pieces, and the mirrored lenses (mirrors through one great circle), whose pieces on a
+// mirror are glued to themselves.
 TEST(CurvedSpacesFiles, AllParseAndBuildDomains) {
   if (!fs::exists(kCurvedSpaces)) GTEST_SKIP() << "test data not found at " << kCurvedSpaces;
   // Group orders (the catalogue's binary dihedral D*n has order 4n) and volumes: the Weeks
@@ -203,7 +221,8 @@ TEST(CurvedSpacesFiles, AllParseAndBuildDomains) {
       {"Binary Dihedral 4 L", 16},   {"Binary Dihedral 6 L", 24},  {"Binary Dihedral 8 L", 32},
       {"Binary Dihedral 12 L", 48},  {"Binary Tetrahedral L", 24}, {"Binary Icosahedral L", 120},
       {"Tetrahedral Space = L(5,2)", 5}, {"Mirrored Tetrahedron", 16}, {"Projective 3-Space", 2},
-      {"Lens(24,1) L", 24}};
+      {"Lens(24,1) L", 24},          {"Mirrored Lens 4", 4},       {"Mirrored Lens 6", 6},
+      {"Mirrored Lens 8", 8},        {"Mirrored Lens 12", 12},     {"Mirrored Lens 24", 24}};
   const std::map<std::string, double> kVolumes = {
       {"Hyperbolic First", 0.9427073628},
       {"Hyperbolic Second", 0.9813688289},
@@ -222,15 +241,6 @@ TEST(CurvedSpacesFiles, AllParseAndBuildDomains) {
       continue;
     }
     const GeneratorSet set = load_generator_file(entry.path());
-    if (name.starts_with("Mirrored Lens")) {
-      EXPECT_THROW(
-          try { dirichlet_domain(set.kind, set.generators); } catch (const SceneError& e) {
-            EXPECT_NE(std::string(e.what()).find("partner face"), std::string::npos) << e.what();
-            throw;
-          },
-          SceneError);
-      continue;
-    }
     const DirichletDomain d = dirichlet_domain(set.kind, set.generators);
     ++built;
     EXPECT_LT(d.isometry_error, 1e-14);
@@ -250,7 +260,7 @@ TEST(CurvedSpacesFiles, AllParseAndBuildDomains) {
   }
   EXPECT_EQ(checked, kOrders.size() + kVolumes.size() + 1);  // the mirrored dodecahedron twice
   EXPECT_EQ(files, 46);
-  EXPECT_EQ(built, 40);  // all but the 3-sphere (no generators) and the 5 mirrored lenses
+  EXPECT_EQ(built, 45);  // all but the 3-sphere, which has no generators
 }
 
 }  // namespace

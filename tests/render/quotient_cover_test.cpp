@@ -1,0 +1,109 @@
+// A spherical quotient S3 / Gamma looks exactly like S3 itself holding every copy g(object),
+// g in Gamma: the face crossings, chart pieces and gluings of the quotient's domain must add up
+// to the plain geodesics of the cover. This checks a domain end to end, pixel by pixel,
+// against a render that uses none of it.
+#include <cmath>
+
+#include "render_fixture.h"
+#include "scene/catalogue.h"
+#include "scene/dirichlet_domain.h"
+
+namespace geodesic::test {
+namespace {
+
+constexpr auto kS3 = GeometryKind::Spherical;
+
+// Every element of the finite group the generators span (closure under products).
+std::vector<Mat4> group_elements(const std::vector<Mat4>& generators) {
+  auto same = [](const Mat4& a, const Mat4& b) {
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c)
+        if (std::abs(a.m[r][c] - b.m[r][c]) > 1e-9) return false;
+    return true;
+  };
+  std::vector<Mat4> elements{Mat4::identity()};
+  for (std::size_t i = 0; i < elements.size(); ++i)
+    for (const Mat4& g : generators) {
+      const Mat4 product = model::reorthonormalize(kS3, g * elements[i]);
+      if (std::none_of(elements.begin(), elements.end(), [&](const Mat4& e) { return same(e, product); }))
+        elements.push_back(product);
+      if (elements.size() > 1000) throw std::runtime_error("not a finite group");
+    }
+  return elements;
+}
+
+// Three glowing spheres near the origin (inside the ball of radius `inradius`), the camera at
+// the origin, primary rays only.
+Scene glowing_spheres(double inradius) {
+  Scene scene;
+  scene.name = "cover";
+  scene.geometry = kS3;
+  const Vec3 colours[] = {{1, 0.3, 0.1}, {0.2, 1, 0.3}, {0.2, 0.4, 1}};
+  const Vec3 places[] = {{0.6, 0.2, -0.7}, {-0.5, 0.6, 0.4}, {0.1, -0.8, 0.3}};
+  for (int i = 0; i < 3; ++i) {
+    Material glow;
+    glow.name = "glow" + std::to_string(i);
+    glow.emission = colours[i];
+    scene.materials.push_back(glow);
+    scene.spheres.push_back({normalize(places[i]) * (0.55 * inradius), 0.3 * inradius, uint32_t(i)});
+  }
+  scene.camera.pose = model::rotation(normalize(Vec3{0.3, 1, 0.2}), 0.7);
+  scene.camera.fov_y_degrees = 100;
+  scene.render.width = scene.render.height = 48;
+  scene.render.max_depth = 0;
+  return scene;
+}
+
+void expect_quotient_matches_cover(const std::string& name, const std::vector<Mat4>& generators) {
+  SCOPED_TRACE(name);
+  const DirichletDomain domain = dirichlet_domain(kS3, generators);
+  Scene quotient = glowing_spheres(domain.inradius);
+  quotient.manifold = domain.manifold;
+  quotient.manifold.max_crossings = 64;  // a ray that misses everything goes all the way round
+
+  Scene cover = quotient;
+  cover.manifold = Manifold{};
+  cover.spheres.clear();
+  // The domain's own face pairings generate Gamma, conjugated to its base point.
+  std::vector<Mat4> pairings;
+  for (const DomainFace& f : domain.manifold.faces) pairings.push_back(f.pairing);
+  const std::vector<Mat4> elements = group_elements(pairings);
+  ASSERT_EQ(elements.size(), domain.elements);
+  for (const Mat4& g : elements)
+    for (const Sphere& s : quotient.spheres)
+      cover.spheres.push_back({model::log_origin(kS3, g * model::exp_origin(kS3, s.center)), s.radius, s.material});
+
+  const Image a = render(quotient, 4), b = render(cover, 4);
+  int lit = 0, differing = 0;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      double difference = 0, brightness = 0;
+      for (int c = 0; c < 3; ++c) {
+        difference = std::max(difference, double(std::abs(a.at(x, y, c) - b.at(x, y, c))));
+        brightness += b.at(x, y, c);
+      }
+      lit += brightness > 0.1;
+      differing += difference > 0.02;
+    }
+  const int pixels = a.width * a.height;
+  EXPECT_GT(lit, pixels / 10) << "the copies should fill part of the view";
+  EXPECT_LT(lit, pixels) << "and leave some background";
+  // Only where float round-off moves a sphere's silhouette by a fraction of a pixel.
+  EXPECT_LE(differing, pixels / 100) << differing << " of " << pixels << " pixels differ";
+  EXPECT_LT(rms_difference(a, b), 0.02);
+}
+
+// Chart atlases: the mirrored lenses (mirror faces glued to themselves) and L(5, 1) (the group
+// preserves a great circle); one single-chart domain as a control.
+TEST(QuotientCover, MirroredLensLooksLikeItsCover) {
+  expect_quotient_matches_cover("mirrored lens 6", mirrored_lens_generators(6));
+  expect_quotient_matches_cover("mirrored lens 4", mirrored_lens_generators(4));
+}
+
+TEST(QuotientCover, LensSpacesLookLikeTheirCover) {
+  expect_quotient_matches_cover("L(5,1)", lens_space_generators(5, 1));
+  expect_quotient_matches_cover("L(7,2)", lens_space_generators(7, 2));
+}
+
+}  // namespace
+}  // namespace geodesic::test
