@@ -18,8 +18,9 @@ nlohmann::ordered_json default_scene_document(const std::string& title, Geometry
                                               nlohmann::ordered_json manifold,
                                               const DirichletDomain& domain);
 
-// The default scene of generator text (.gen or SnapPy), inline in the document. `source` names
-// the text in errors (SceneError).
+// The default scene of generator text (.gen or SnapPy), inline in the document, named by the
+// text's first comment line. `source` names the text in errors (SceneError), and the scene when
+// the text has no comment.
 nlohmann::ordered_json generator_text_scene(const std::string& text, const std::string& source);
 
 // The default scene of a generator file, named by `path` as given (relative names resolve

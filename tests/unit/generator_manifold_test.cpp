@@ -94,6 +94,7 @@ TEST(DefaultScene, FitsTheDomainOfEachGeometry) {
     const CatalogueEntry& e = *find_catalogue_entry(name);
     const Scene s = parse_scene(generator_text_scene(catalogue_gen_text(e), name), {});
     EXPECT_EQ(s.geometry, e.kind) << name;
+    EXPECT_EQ(s.name, e.title) << "named by the text's first comment line";
     EXPECT_EQ(s.spheres.size(), 3u) << name;
     EXPECT_EQ(s.lights.size(), 1u) << name;
     EXPECT_FALSE(s.manifold.faces.empty()) << name;
@@ -101,6 +102,18 @@ TEST(DefaultScene, FitsTheDomainOfEachGeometry) {
     for (const Sphere& sphere : s.spheres)
       EXPECT_LT(length(sphere.center) + sphere.radius, d.inradius) << name;
   }
+}
+
+TEST(DefaultScene, NamedByTheFirstCommentOrTheSource) {
+  const std::string matrix =  // the cubic 3-torus, rows acting on row vectors
+      "1 0 0 0\n0 1 0 0\n0 0 1 0\n2 0 0 1\n\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 2 0 1\n\n"
+      "1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 2 1\n";
+  auto name = [&](const std::string& text) { return generator_text_scene(text, "dropped")["name"]; };
+  EXPECT_EQ(name("\xEF\xBB\xBF#\tMirrored Lens with dihedral angle 2\xCF\x80/6\r\n#\n\n" + matrix),
+            "Mirrored Lens with dihedral angle 2\xCF\x80/6");
+  EXPECT_EQ(name("\n  #   \n# Slab  \n" + matrix), "Slab");
+  EXPECT_EQ(name(matrix + "# trailing\n"), "dropped");
+  EXPECT_EQ(name(matrix), "dropped");
 }
 
 // The schema declares the new manifold types with every field the catalogue's scenes use.

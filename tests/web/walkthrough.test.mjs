@@ -337,15 +337,18 @@ test('a render job runs to its files, another is cancelled', async () => {
 });
 
 test('a .gen file picked on the page opens its space, and W walks through it', async () => {
-  const gen = path.resolve(here, '../../catalogue/lens-7-2.gen');
+  // A mirrored lens: its domain is charted in pieces, and two of its faces are mirrors.
+  const gen = path.resolve(here, '../../catalogue/mirrored-lens-6.gen');
   await page.setInputFiles('#generator-file', gen);
   await waitFor(() => sentOfType('open').some((m) => typeof m.generators === 'string' &&
-                                                     m.generators.includes('L(7,2)')), 'open {generators}');
-  await waitForShownFrame(page, 2, (f) => f.scene === 'generators');
+                                                     m.generators.includes('Mirrored lens')), 'open {generators}');
+  // Named by the file's first comment line.
+  const title = 'Mirrored lens, dihedral angle 2 pi / 6 (orbifold)';
+  await waitForShownFrame(page, 2, (f) => f.scene === title);
   const scene = receivedOfType('scene').at(-1);
-  assert.equal(scene.name, 'generators');
+  assert.equal(scene.name, title);
   assert.equal(scene.geometry, 'spherical');
-  assert.match(await page.textContent('#scene-title'), /generators/);
+  assert.match(await page.textContent('#scene-title'), /Mirrored lens.* — spherical, generators/);
 
   const before = await canvasBlocks(page);
   const movesBefore = sentOfType('move').length;
@@ -354,7 +357,8 @@ test('a .gen file picked on the page opens its space, and W walks through it', a
   await page.waitForTimeout(400);
   await page.keyboard.up('w');
   await waitFor(() => sentOfType('move').length > movesBefore, 'a move inside the lens space');
-  const after = await waitForShownFrame(page, 2, (f) => f.scene === 'generators');
+  const after = await waitForShownFrame(page, 2, (f) => f.scene === title);
+  await page.screenshot({ path: path.join(SCREENSHOT_DIR, 'walkthrough-generators.png') });
   const changed = meanAbsDiff(before, await canvasBlocks(page));
   console.log(`# lens space walk: block diff ${changed.toFixed(2)}, frame ${after.frame}`);
   assert.ok(changed > 1, `walking did not change the view: ${changed}`);
