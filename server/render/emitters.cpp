@@ -24,7 +24,8 @@ std::array<float, 4> to_float4(const Vec3& v, double w) {
 
 // The cutoff the scene asks for, or the default: every image for a finite group (S3), one
 // copy for the whole E3 or H3, and images within the domain's circumradius R of the cell's
-// centre otherwise (at most 1 in H3, where the copies multiply exponentially).
+// centre otherwise (at most 1 in H3, where the copies multiply exponentially; halved while
+// they are too many, build_emitters).
 double resolve_cutoff(const Scene& scene, double circumradius) {
   const GeometryKind k = scene.geometry;
   if (scene.render.light_cutoff > 0)
@@ -166,8 +167,18 @@ EmitterTable build_emitters(const Scene& scene) {
   for (const Emitting& e : found) total += e.power;
   // Images are chosen by their distance from the cell's centre, the same for every shading
   // point, so that light sampling and its density at BSDF-found hits agree everywhere.
-  const std::vector<Mat4> group =
-      group_elements_within(k, scene.manifold, std::min(table.cutoff, kPi) + circumradius);
+  std::vector<Mat4> group;
+  for (;;) {
+    try {
+      group = group_elements_within(k, scene.manifold, std::min(table.cutoff, kPi) + circumradius);
+      break;
+    } catch (const SceneError&) {
+      // The default halves until the images fit: a kaleidoscope's tiny cells have thousands
+      // of copies within its circumradius. A cutoff the scene asks for stands or fails.
+      if (scene.render.light_cutoff > 0 || table.cutoff < 1e-3) throw;
+      table.cutoff /= 2;
+    }
+  }
   double cdf = 0;
   for (Emitting& e : found) {
     e.gpu.pmf = float(e.power / total);

@@ -1,10 +1,12 @@
 #include "scene/catalogue.h"
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <numeric>
 
+#include "scene/coxeter_orthoscheme.h"
 #include "scene/dirichlet_domain.h"
 #include "scene/generator_file.h"
 #include "scene/manifold.h"
@@ -164,6 +166,19 @@ std::vector<CatalogueEntry> build() {
                "the reflections in the 12 faces of the regular dodecahedron with right dihedral "
                "angles",
                mirrors, std::nullopt, 4.306207601, true});
+  // Kaleidoscopes: the compact Coxeter orthoschemes, volumes by Lobachevsky's formula (120 of
+  // [5,3,4] make the right-angled dodecahedron, 120 of [5,3,5] the Seifert-Weber one).
+  for (const auto& [p, q, r] : {std::array{3, 5, 3}, {5, 3, 4}, {5, 3, 5}}) {
+    const std::string diagram = std::to_string(p) + "," + std::to_string(q) + "," + std::to_string(r);
+    c.push_back({"coxeter-" + std::to_string(p) + "-" + std::to_string(q) + "-" + std::to_string(r),
+                 "Coxeter orthoscheme [" + diagram + "] (orbifold)", kH3,
+                 "reflections in the faces of the tetrahedron with dihedral angles pi/" +
+                     std::to_string(p) + ", pi/" + std::to_string(q) + ", pi/" + std::to_string(r) +
+                     " along a path of edges and pi/2 elsewhere: unit normals with the diagram's "
+                     "Gram matrix (coxeter_orthoscheme_generators)",
+                 coxeter_orthoscheme_generators(p, q, r), std::nullopt, orthoscheme_volume(p, q, r),
+                 true});
+  }
   return c;
 }
 

@@ -1,9 +1,10 @@
-// The classic catalogue of closed 3-manifolds (and two orbifolds) as generators of Gamma,
-// each built from its closed form here: flat spaces from screw motions and glide reflections,
-// spherical spaces from unit quaternions and lens rotations, hyperbolic ones from the regular
-// dodecahedra of scene/manifold.h. `geodesic catalogue` writes them as catalogue/<name>.gen
-// (with catalogue/README.md and a default scene per entry in scenes/catalogue/); the tests
-// hold the committed files to this code.
+// The classic catalogue of closed 3-manifolds (and some mirrored orbifolds) as generators of
+// Gamma, each built from its closed form here: flat spaces from screw motions and glide
+// reflections, spherical spaces from unit quaternions, lens rotations and mirrors, hyperbolic
+// ones from the regular dodecahedra of scene/manifold.h and the Coxeter orthoschemes.
+// `geodesic catalogue` writes them as catalogue/<name>.gen (with catalogue/README.md and a
+// default scene per entry in scenes/catalogue/); the tests hold the committed files to this
+// code.
 #pragma once
 
 #include <optional>
