@@ -149,7 +149,7 @@ TEST(WebSocket, GeneratorTextOpensTheSpaceItDescribes) {
   client.send({{"type", "open"}, {"generators", text.str()}});
   json scene = client.read_until("scene");
   if (scene["name"] == "cornell-box") scene = client.read_until("scene");  // the default's first
-  EXPECT_EQ(scene["name"], "generators");
+  EXPECT_EQ(scene["name"], "Lens space L(7,2)");  // the text's first comment line
   EXPECT_EQ(scene["geometry"], "spherical");
   EXPECT_EQ(scene["manifold"], "generators");
 
