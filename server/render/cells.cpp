@@ -89,14 +89,21 @@ CameraPlacement place_camera(GeometryKind k, const std::vector<Cell>& cells, con
     }
     return out;
   }
-  // The cell charted nearest to the camera; in a domain cut into pieces, a camera beyond the
-  // domain's boundary (a face whose pairing is not the identity) is carried back in first.
+  // The cell whose walls towards other cells hold the camera best (the nearest charted on a
+  // tie: pieces of a lune all meet along one edge); in a domain cut into pieces, a camera beyond
+  // the domain's boundary (a face whose pairing is not the identity) is carried back in first.
   for (int step = 0; step < 64; ++step) {
-    double best = -2;
+    double best_outside = INFINITY, best_w = -2;
     for (uint32_t c = 0; c < cells.size(); ++c) {
-      const double w = (cells[c].chart_isometry * (out.pose * model::origin())).w;
-      if (w > best) {
-        best = w;
+      const Vec4 q = cells[c].chart_isometry * (out.pose * model::origin());
+      if (q.w <= 1e-9 && k == GeometryKind::Spherical) continue;  // beyond the chart's horizon
+      const Vec3 x = model::chart(k, q);
+      double outside = 0;
+      for (const CellFace& f : cells[c].faces)
+        if (is_identity(f.pairing)) outside = std::max(outside, dot(f.normal, x) - f.delta);
+      if (outside < best_outside - 1e-12 || (outside < best_outside + 1e-12 && q.w > best_w)) {
+        best_outside = std::min(best_outside, outside);
+        best_w = q.w;
         out.cell = c;
       }
     }
@@ -119,7 +126,7 @@ std::vector<Cell> build_cells(const Scene& scene) {
     for (const DomainPiece& piece : scene.manifold.pieces) {
       Cell cell{piece.chart_isometry, face_begin, {}};
       for (const PieceFace& f : piece.faces)
-        cell.faces.push_back({f.normal, f.delta, f.pairing, f.target, f.partner});
+        cell.faces.push_back({f.normal, f.delta, f.pairing, f.target, f.partner, f.internal});
       face_begin += static_cast<int>(cell.faces.size());
       cells.push_back(std::move(cell));
     }

@@ -21,6 +21,7 @@ struct CellFace {
   Mat4 pairing;      // model isometry applied to a ray leaving through this face
   int target_cell;   // the cell the ray continues in
   int partner;       // the face (global index) it enters through
+  bool internal = false;  // a wall between pieces of one domain (scene/manifold.h PieceFace)
 };
 
 struct Cell {

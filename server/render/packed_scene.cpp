@@ -119,7 +119,7 @@ PackedScene pack_scene(const Scene& scene) {
                          uint32_t(cell.faces.size()), {0, 0}});
     for (const CellFace& f : cell.faces)
       out.faces.push_back({to_float4(f.normal, f.delta), f.pairing.to_glsl(),
-                           uint32_t(f.target_cell), uint32_t(f.partner), {0, 0}});
+                           uint32_t(f.target_cell), uint32_t(f.partner), uint32_t(f.internal), 0});
     CellGeometry g;
     g.first_triangle = uint32_t(out.triangles.size());
     pack_cell_triangles(scene, emitting, cell, c, out);

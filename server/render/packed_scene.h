@@ -63,7 +63,8 @@ struct GpuCellFace {
   Float16 pairing;  // column-major
   uint32_t target_cell;
   uint32_t partner;
-  uint32_t padding[2];
+  uint32_t internal;  // 1: a wall between pieces, not counted as a crossing (INTERNAL_WALLS)
+  uint32_t padding;
 };
 
 struct GpuAabb {

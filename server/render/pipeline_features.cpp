@@ -98,6 +98,8 @@ PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
   f.point_light_count = f.paper ? uint32_t(packed.lights.size()) : 0;
   f.emitter_count = f.light_sampling ? uint32_t(packed.emitters.size()) : 0;
   f.max_crossings = f.crossing == Crossing::None ? 0 : uint32_t(scene.manifold.max_crossings);
+  f.internal_walls = std::any_of(packed.faces.begin(), packed.faces.end(),
+                                 [](const GpuCellFace& face) { return face.internal != 0; });
   return f;
 }
 
@@ -106,7 +108,7 @@ PipelineFeatures all_features(GeometryKind geometry) {
   f.geometry = geometry;
   f.variant = PipelineVariant::AllFeatures;
   f.crossing = Crossing::Isometry;
-  f.multiple_charts = f.spheres = f.triangles = f.smooth_normals = true;
+  f.multiple_charts = f.spheres = f.triangles = f.smooth_normals = f.internal_walls = true;
   f.paper = f.physical = f.point_lights = f.light_sampling = true;
   f.sphere_emitters = f.triangle_emitters = f.transmission = true;
   return f;
@@ -142,6 +144,7 @@ std::vector<std::string> PipelineFeatures::defines() const {
   flag(variant == PipelineVariant::Specialised && primitive_culling && spheres != triangles,
        "CULL_PRIMITIVES");
   flag(shared_cell_masks, "SHARED_CELL_MASKS");
+  flag(internal_walls, "INTERNAL_WALLS");
   if (variant == PipelineVariant::Specialised) {
     d.push_back("POINT_LIGHT_COUNT=" + std::to_string(point_light_count) + "u");
     d.push_back("EMITTER_COUNT=" + std::to_string(emitter_count) + "u");
@@ -192,6 +195,7 @@ std::string PipelineFeatures::summary() const {
   word(triangle_emitters, "triangle-lights");
   word(transmission, "refraction");
   word(shared_cell_masks, "shared-cell-masks");
+  word(internal_walls, "internal-walls");
   return s;
 }
 

@@ -43,6 +43,9 @@ struct PipelineFeatures {
   // sharing the bit are rejected by cell (triangles then need any-hit checks). A requirement
   // of the scene, in both variants.
   bool shared_cell_masks = false;
+  // Walls between the pieces of a domain charted apart: crossing one starts no new copy of the
+  // domain, so it does not count against MAX_CROSSINGS (MAX_WALL_CROSSINGS bounds them).
+  bool internal_walls = false;
   // Baked constants (specialised only): loop bounds the compiler can unroll or drop.
   uint32_t point_light_count = 0, emitter_count = 0, max_crossings = 0;
 

@@ -280,9 +280,10 @@ std::string catalogue_readme() {
       "all of them with the volume of the computed Dirichlet domain).\n\n"
       "Projective space, L(p, 1), its mirror image L(p, p - 1) and the mirrored lenses preserve\n"
       "a great circle, so no fundamental domain fits one gnomonic chart: their Dirichlet domains\n"
-      "are cut into pieces charted apart (server/scene/chart_atlas.h), up to 256; past eight,\n"
-      "the renderer's cells share ray-mask bits and filter candidates by cell\n"
-      "(docs/pipelines.md).\n\n"
+      "are cut into pieces charted apart (server/scene/chart_atlas.h). A lune is cut like an\n"
+      "orange into tetrahedra (p of them for L(p, 1), 4 for a mirrored lens), projective space\n"
+      "by Voronoi cells; past eight, the renderer's cells share ray-mask bits and filter\n"
+      "candidates by cell (docs/pipelines.md).\n\n"
       "| name | geometry | order | volume | Dirichlet domain | generators |\n"
       "|---|---|---|---|---|---|\n";
   for (const CatalogueEntry& e : catalogue()) {

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "scene/atlas_piece.h"
 #include "scene/plane_clipping.h"
 #include "scene/scene.h"
 
@@ -26,34 +27,10 @@ int find_point(const std::vector<Vec4>& points, const Vec4& p) {
   return -1;
 }
 
-// The half-space <x, m> <= 0 in the chart of frame P (chart = (P x).xyz / (P x).w); nullopt
-// when its plane is the chart's horizon.
-std::optional<ChartPlane> chart_plane(const Mat4& p, const Vec4& m) {
-  const Vec4 q = p * m;
-  const double s = length(q.xyz());
-  if (s < 1e-12) return std::nullopt;
-  return ChartPlane{q.xyz() / s, -q.w / s};
-}
-
 bool same_plane(const ChartPlane& a, const ChartPlane& b, double tolerance) {
   return dot(a.normal, b.normal) > 1 - tolerance &&
          std::abs(a.delta - b.delta) < tolerance * std::max(1.0, std::abs(a.delta));
 }
-
-// A candidate plane of a piece: a Voronoi wall (towards centre `index`) or the bisector of the
-// origin and element `index` (a face of D).
-struct Wall {
-  ChartPlane plane;
-  bool voronoi;
-  int index;
-};
-
-struct Piece {
-  int centre;
-  Mat4 frame;
-  Polyhedron polyhedron;
-  std::vector<Wall> walls;  // one per face of the polyhedron
-};
 
 // A frame off every axis, so that no Voronoi wall falls on a bisector of the origin's orbit.
 std::vector<Vec4> frame_axes() {
@@ -68,10 +45,10 @@ std::vector<Vec4> frame_axes() {
   return axes;
 }
 
-std::optional<Piece> make_piece(const std::vector<GroupElement>& elements,
+std::optional<AtlasPiece> make_piece(const std::vector<GroupElement>& elements,
                                 const std::vector<Vec4>& centres, int c, double tolerance) {
-  Piece piece{c, model::translation_from(kS3, centres[c]), {}, {}};
-  std::vector<Wall> walls;
+  AtlasPiece piece{c, model::translation_from(kS3, centres[c]), {}, {}};
+  std::vector<AtlasWall> walls;
   for (int t = 0; t < static_cast<int>(centres.size()); ++t) {
     // Voronoi cells lie within pi/3 of their centres: only centres within 2 pi / 3 are walls.
     if (t == c || dot(centres[t], centres[c]) < -0.5 - 1e-9) continue;
@@ -87,19 +64,19 @@ std::optional<Piece> make_piece(const std::vector<GroupElement>& elements,
   // A mirror r of the group is also the Voronoi wall between s and r s. If D lies on s's side
   // the face must carry r's gluing, so the Voronoi copy of the plane goes; if it lies beyond,
   // the piece would be flat.
-  for (const Wall& b : walls)
-    for (const Wall& v : walls)
-      if (!b.voronoi && v.voronoi && same_plane(b.plane, {-v.plane.normal, -v.plane.delta}, tolerance))
+  for (const AtlasWall& b : walls)
+    for (const AtlasWall& v : walls)
+      if (!b.internal && v.internal && same_plane(b.plane, {-v.plane.normal, -v.plane.delta}, tolerance))
         return std::nullopt;
-  std::erase_if(walls, [&](const Wall& v) {
-    return v.voronoi && std::any_of(walls.begin(), walls.end(), [&](const Wall& b) {
-             return !b.voronoi && same_plane(v.plane, b.plane, tolerance);
+  std::erase_if(walls, [&](const AtlasWall& v) {
+    return v.internal && std::any_of(walls.begin(), walls.end(), [&](const AtlasWall& b) {
+             return !b.internal && same_plane(v.plane, b.plane, tolerance);
            });
   });
   std::sort(walls.begin(), walls.end(),
-            [](const Wall& a, const Wall& b) { return a.plane.delta < b.plane.delta; });
+            [](const AtlasWall& a, const AtlasWall& b) { return a.plane.delta < b.plane.delta; });
   std::vector<ChartPlane> planes;
-  for (const Wall& w : walls) planes.push_back(w.plane);
+  for (const AtlasWall& w : walls) planes.push_back(w.plane);
   const ClippedPolyhedron clipped = clip_planes(planes, tolerance, INFINITY, kMaxPieceFaces);
   if (!clipped.polyhedron.bounded && clipped.kept.size() >= kMaxPieceFaces)
     throw SceneError("generators: a chart piece of the domain needs more than " +
@@ -113,7 +90,7 @@ std::optional<Piece> make_piece(const std::vector<GroupElement>& elements,
 }
 
 // Largest distance from a face's vertices, carried by g, to the partner face's vertices.
-double mismatch(const Piece& from, int face, const Piece& to, int partner, const Mat4& g) {
+double mismatch(const AtlasPiece& from, int face, const AtlasPiece& to, int partner, const Mat4& g) {
   double worst = 0;
   for (int v : from.polyhedron.faces[face]) {
     const Vec4 x = model::inverse_isometry(kS3, from.frame) * model::lift(kS3, from.polyhedron.vertices[v]);
@@ -127,24 +104,17 @@ double mismatch(const Piece& from, int face, const Piece& to, int partner, const
   return worst;
 }
 
-}  // namespace
-
-Manifold chart_atlas_manifold(const std::vector<GroupElement>& elements, double tolerance) {
-  std::vector<Vec4> centres;
+// The Voronoi cut (header): the pieces D n V_s, with piece_of[s] the piece of centre s.
+std::vector<AtlasPiece> voronoi_pieces(const std::vector<GroupElement>& elements, double tolerance,
+                                       std::vector<Vec4>& centres, std::vector<int>& piece_of) {
   const std::vector<Vec4> axes = frame_axes();
   for (const GroupElement& e : elements)
     for (const Vec4& a : axes) {
       const Vec4 p = model::normalize_point(kS3, e.g * a);
       if (find_point(centres, p) < 0) centres.push_back(p);
     }
-  std::vector<Vec4> points;  // the elements' images of the origin, to find inverses
-  for (const GroupElement& e : elements) points.push_back(e.point);
-  auto inverse_of = [&](int i) {
-    return find_point(points, model::inverse_isometry(kS3, elements[i].g) * model::origin());
-  };
-
-  std::vector<Piece> pieces;
-  std::vector<int> piece_of(centres.size(), -1);
+  std::vector<AtlasPiece> pieces;
+  piece_of.assign(centres.size(), -1);
   for (int c = 0; c < static_cast<int>(centres.size()); ++c)
     if (auto piece = make_piece(elements, centres, c, tolerance)) {
       piece_of[c] = static_cast<int>(pieces.size());
@@ -155,28 +125,52 @@ Manifold chart_atlas_manifold(const std::vector<GroupElement>& elements, double 
                          "holds its domain), and the renderer keeps at most " +
                          std::to_string(kMaxPieces) + " cells");
     }
+  return pieces;
+}
+
+}  // namespace
+
+Manifold chart_atlas_manifold(const std::vector<GroupElement>& elements, double tolerance) {
+  std::vector<Vec4> points;  // the elements' images of the origin, to find inverses
+  for (const GroupElement& e : elements) points.push_back(e.point);
+  auto inverse_of = [&](int i) {
+    return find_point(points, model::inverse_isometry(kS3, elements[i].g) * model::origin());
+  };
+  std::vector<Vec4> centres;
+  std::vector<int> piece_of;
+  std::vector<AtlasPiece> pieces;
+  if (auto lune = lune_pieces(elements, tolerance)) {
+    pieces = std::move(*lune);
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      centres.push_back(model::inverse_isometry(kS3, pieces[i].frame) * model::origin());
+      piece_of.push_back(static_cast<int>(i));
+    }
+  } else {
+    pieces = voronoi_pieces(elements, tolerance, centres, piece_of);
+  }
+
   Manifold m;
   m.name = "generators";
   std::vector<int> first_face;
   int faces = 0;
-  for (const Piece& p : pieces) {
+  for (const AtlasPiece& p : pieces) {
     first_face.push_back(faces);
     faces += static_cast<int>(p.walls.size());
   }
-  auto face_of = [&](int piece, bool voronoi, int index) {
+  auto face_of = [&](int piece, bool internal, int index) {
     const auto& walls = pieces[piece].walls;
     for (std::size_t k = 0; k < walls.size(); ++k)
-      if (walls[k].voronoi == voronoi && walls[k].index == index) return static_cast<int>(k);
+      if (walls[k].internal == internal && walls[k].index == index) return static_cast<int>(k);
     return -1;
   };
   std::vector<int> domain_faces;  // elements whose bisector bounds D
   for (std::size_t p = 0; p < pieces.size(); ++p) {
     DomainPiece out{pieces[p].frame, {}, pieces[p].polyhedron};
     for (std::size_t k = 0; k < pieces[p].walls.size(); ++k) {
-      const Wall& w = pieces[p].walls[k];
+      const AtlasWall& w = pieces[p].walls[k];
       Mat4 g = Mat4::identity();
       int target = -1, partner = -1;
-      if (w.voronoi) {
+      if (w.internal) {
         target = piece_of[w.index];
         if (target >= 0) partner = face_of(target, true, pieces[p].centre);
       } else {
@@ -185,10 +179,16 @@ Manifold chart_atlas_manifold(const std::vector<GroupElement>& elements, double 
         const int centre = find_point(centres, model::normalize_point(kS3, g * centres[pieces[p].centre]));
         target = centre >= 0 ? piece_of[centre] : -1;
         if (target >= 0 && inverse >= 0) partner = face_of(target, false, inverse);
-        // A mirror's piece faces the mirror image of its centre, which has no piece (its
-        // Voronoi cell lies beyond the mirror): the reflection glues the face to itself.
-        if (partner < 0 && inverse == w.index && mismatch(pieces[p], int(k), pieces[p], int(k), g) <= 100 * tolerance)
-          target = int(p), partner = int(k);
+        if (partner >= 0 && mismatch(pieces[p], int(k), pieces[target], partner, g) > 100 * tolerance)
+          partner = -1;
+        // No piece holds g's image of this piece's centre: a mirror's piece faces the mirror
+        // image of its centre, whose cell lies beyond the mirror, and a lune's pieces turn
+        // with its twist. The partner is then the face of g^-1 that g carries this one onto.
+        for (int q = 0; partner < 0 && inverse >= 0 && q < static_cast<int>(pieces.size()); ++q) {
+          const int f = face_of(q, false, inverse);
+          if (f >= 0 && mismatch(pieces[p], int(k), pieces[q], f, g) <= 100 * tolerance)
+            target = q, partner = f;
+        }
         if (std::find(domain_faces.begin(), domain_faces.end(), w.index) == domain_faces.end())
           domain_faces.push_back(w.index);
       }
@@ -198,7 +198,7 @@ Manifold chart_atlas_manifold(const std::vector<GroupElement>& elements, double 
       const double off = mismatch(pieces[p], int(k), pieces[target], partner, g);
       if (off > 100 * tolerance)
         throw SceneError(where + ": its gluing misses the partner face by " + std::to_string(off));
-      out.faces.push_back({w.plane.normal, w.plane.delta, g, target, first_face[target] + partner});
+      out.faces.push_back({w.plane.normal, w.plane.delta, g, target, first_face[target] + partner, w.internal});
     }
     m.pieces.push_back(std::move(out));
   }

@@ -50,11 +50,10 @@ std::string title_of(const std::string& text, const std::string& fallback) {
 Json default_scene_document(const std::string& title, GeometryKind kind, Json manifold,
                             const DirichletDomain& domain) {
   const double r = domain.inradius;
-  // A domain cut into pieces (chart_atlas.h) has no edges in one chart to draw, and a ray
-  // crosses the walls between its pieces too.
+  // A domain cut into pieces (chart_atlas.h) has no edges in one chart to draw; the walls
+  // between its pieces do not count as crossings.
   const bool pieces = !domain.manifold.pieces.empty();
-  if (!manifold.contains("max_crossings"))
-    manifold["max_crossings"] = std::min(64, crossings_for(kind, r) * (pieces ? 2 : 1));
+  if (!manifold.contains("max_crossings")) manifold["max_crossings"] = crossings_for(kind, r);
   // Sphere centres at 0.55 r and radii 0.18 r keep every sphere inside the in-ball; the light's
   // intensity goes with r^2, as its distance to the spheres does (small domains are nearly flat).
   const Vec3 red = normalize(Vec3{0.5, 0.1, -0.85}) * (0.55 * r);

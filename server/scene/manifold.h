@@ -30,6 +30,7 @@ struct PieceFace {
   Mat4 pairing;  // identity between pieces of the domain, a group element across its boundary
   int target = 0;
   int partner = 0;
+  bool internal = false;  // a wall between pieces: crossing it starts no new copy of the domain
 };
 struct DomainPiece {
   Mat4 chart_isometry;  // model -> the piece's frame (its centre to the origin)

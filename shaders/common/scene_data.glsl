@@ -69,7 +69,8 @@ struct CellFace {
   mat4 pairing;  // applied to a ray leaving through the face
   uint targetCell;
   uint partner;  // the face entered through
-  uint pad0, pad1;
+  uint internal;  // 1: a wall between pieces of one domain (not a crossing of MAX_CROSSINGS)
+  uint pad1;
 };
 
 layout(set = 0, binding = 0) uniform accelerationStructureEXT uScene;
@@ -137,6 +138,9 @@ layout(set = 0, binding = 16, std430) readonly buffer LightImages { mat4 lightIm
 #if !defined(MAX_CROSSINGS)
 #define MAX_CROSSINGS frame.maxCrossings
 #endif
+// A bound on walls between pieces crossed in one trace: a lune of L(p, 1) has p pieces around
+// one edge (scene/atlas_piece.h).
+#define MAX_WALL_CROSSINGS (1024u + 8u * MAX_CROSSINGS)
 
 // Which samples this dispatch adds, [sampleStart, sampleStart + sampleCount), to which rows:
 // the dispatch's y runs over [rowOffset, rowOffset + rowCount).

@@ -1,7 +1,9 @@
 // The paper's algorithm 1, generalised to cells: trace a geodesic through the current cell's
 // chart; when it reaches a face of the cell without hitting anything, carry it across (the
 // face's pairing isometry, or a change of chart) and go on, up to MAX_CROSSINGS times. A space
-// without faces (CELL_CROSSING undefined) traces one chart segment. The crossing code is the
+// without faces (CELL_CROSSING undefined) traces one chart segment. Walls between the pieces of
+// one domain (INTERNAL_WALLS) do not count: up to MAX_WALL_CROSSINGS of them, as a ray that
+// starts on the edge all the pieces of a lune share passes through many at once. The crossing code is the
 // pairing kind's only (PAIRING_*, server/render/pipeline_features.h).
 // Needs ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool any)
 // from the entry point.
@@ -85,7 +87,10 @@ bool followGeodesic(inout GeodesicRay ray, float maxDistance, bool anyHit, out C
   hit = traceChart(whole.o, whole.d, sWhole, ray.cell, whole.p, whole.v, anyHit);
   return hit.kind != 0u;
 #else
-  for (uint crossing = 0u; crossing <= MAX_CROSSINGS; ++crossing) {
+#if defined(INTERNAL_WALLS)
+  uint walls = 0u;  // crossed between pieces of the domain: bounded apart from MAX_CROSSINGS
+#endif
+  for (uint crossing = 0u; crossing <= MAX_CROSSINGS;) {
     ChartLine line = chartLineOf(ray);
     float sExit;
     uint face = exitFace(ray, line, sExit);
@@ -98,6 +103,13 @@ bool followGeodesic(inout GeodesicRay ray, float maxDistance, bool anyHit, out C
     if (last) return false;
     travelled += tExit;
     ray = crossFace(ray, face, tExit);
+#if defined(INTERNAL_WALLS)
+    if (cellFaces[face].internal != 0u) {
+      if (++walls > MAX_WALL_CROSSINGS) return false;
+      continue;
+    }
+#endif
+    ++crossing;
   }
   return false;
 #endif

@@ -185,13 +185,15 @@ TEST(SpecialisedPipelines, EveryBundledSceneRendersAsWithAllFeatures) {
   }
 }
 
-// Past eight cells (L(5, 1): 24 chart pieces) cells share ray-mask bits, and the shaders keep
-// each ray to its own cell's candidates: in the ray-query loop, and with any-hit shaders in the
-// ray-tracing pipeline. Both back ends must agree.
+// Past eight cells (L(3, 1): its lune cut into 6 x 2 tetrahedra) cells share ray-mask bits, and
+// the shaders keep each ray to its own cell's candidates: in the ray-query loop, and with any-hit
+// shaders in the ray-tracing pipeline; the walls between the pieces are not counted as
+// crossings. Both back ends must agree.
 TEST(SharedCellMasks, ManyCellsRenderAlikeWithBothBackends) {
-  const Scene scene = small(load_scene_file(source_path("scenes/catalogue/lens-5-1.json")), 24);
+  const Scene scene = small(load_scene_file(source_path("scenes/catalogue/lens-3-1.json")), 24);
   Renderer query(device(), scene, BackendKind::RayQuery);
   EXPECT_TRUE(query.features().shared_cell_masks);
+  EXPECT_TRUE(query.features().internal_walls);
   query.add_samples(8);
   EXPECT_EQ(query.non_finite_samples(), 0u);
   EXPECT_GT(luminance_of(mean(query.image())), 0.01);

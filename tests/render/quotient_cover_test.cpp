@@ -93,8 +93,9 @@ void expect_quotient_matches_cover(const std::string& name, const std::vector<Ma
   EXPECT_LT(rms_difference(a, b), 0.02);
 }
 
-// Chart atlases: the mirrored lenses (mirror faces glued to themselves) and L(5, 1) (the group
-// preserves a great circle); one single-chart domain as a control.
+// Chart atlases: the mirrored lenses (mirror faces glued to themselves), L(5, 1) and L(3, 1)
+// (lunes twisted by their pairings, the camera on the edge all their pieces share); one
+// single-chart domain as a control.
 TEST(QuotientCover, MirroredLensLooksLikeItsCover) {
   expect_quotient_matches_cover("mirrored lens 6", mirrored_lens_generators(6));
   expect_quotient_matches_cover("mirrored lens 4", mirrored_lens_generators(4));
@@ -102,6 +103,7 @@ TEST(QuotientCover, MirroredLensLooksLikeItsCover) {
 
 TEST(QuotientCover, LensSpacesLookLikeTheirCover) {
   expect_quotient_matches_cover("L(5,1)", lens_space_generators(5, 1));
+  expect_quotient_matches_cover("L(3,1)", lens_space_generators(3, 1));  // its arc cut in two
   expect_quotient_matches_cover("L(7,2)", lens_space_generators(7, 2));
 }
 

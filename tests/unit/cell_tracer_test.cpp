@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "render/cell_tracer.h"
+#include "scene/catalogue.h"
+#include "scene/dirichlet_domain.h"
 
 namespace geodesic {
 namespace {
@@ -130,6 +132,27 @@ TEST(CellTracer, SphericalAtlasGoesAllTheWayAround) {
   EXPECT_NEAR(model::geodesic_distance(GeometryKind::Spherical, home, start.p), 0, 1e-12);
   EXPECT_EQ(ray.cell, start.cell);
   EXPECT_GE(crossings, 4);
+}
+
+// A lune's pieces all meet along one arc: a camera anywhere in the lune, on that arc or off it,
+// is placed in a piece that holds it (the walls between pieces are not crossings to be paid).
+TEST(CellTracer, CameraGoesToThePieceThatHoldsIt) {
+  constexpr auto kS3 = GeometryKind::Spherical;
+  const auto cells = build_cells(scene_of(kS3, dirichlet_domain(kS3, lens_space_generators(3, 1)).manifold));
+  ASSERT_EQ(cells.size(), 12u);  // 6 angles around the edge, and the arc cut in two
+  int placed = 0;
+  for (int i = 0; i < 200; ++i) {
+    // Points spread over the lune (inradius pi / 3 about the origin), some near its edge.
+    const double a = 0.7 * i, b = 1.3 * i + 0.2;
+    const Vec3 w = Vec3{std::cos(a) * std::sin(b), std::sin(a) * std::sin(b), std::cos(b)} *
+                   (1.0 * (i % 7 + 1) / 7.0);
+    const Mat4 pose = model::translation(kS3, w);
+    const CameraPlacement camera = place_camera(kS3, cells, pose);
+    const Vec4 p = camera.pose * model::origin();
+    EXPECT_LT(outside(kS3, cells[camera.cell], p), 1e-9) << i;
+    placed += outside(kS3, cells[camera.cell], p) < 1e-9;
+  }
+  EXPECT_EQ(placed, 200);
 }
 
 }  // namespace

@@ -146,14 +146,25 @@ void expect_atlas_glued(const DirichletDomain& d) {
 // gnomonic chart, so the Dirichlet domain is cut into pieces charted apart (chart_atlas.h),
 // more than eight past RP3 (the renderer's cells then share ray-mask bits).
 TEST(LensSpaces, GreatCircleGroupsAreChartedInPieces) {
-  for (const auto& [p, q] : {std::pair{2, 1}, {3, 1}, {7, 1}, {6, 5}, {40, 1}}) {
+  constexpr auto kS3 = GeometryKind::Spherical;
+  for (const auto& [p, q] : {std::pair{2, 1}, {3, 1}, {7, 1}, {6, 5}, {40, 1}, {1000, 1}, {999, 998}}) {
     SCOPED_TRACE("L(" + std::to_string(p) + "," + std::to_string(q) + ")");
-    const DirichletDomain d = dirichlet_domain(GeometryKind::Spherical, lens_space_generators(p, q));
+    const DirichletDomain d = dirichlet_domain(kS3, lens_space_generators(p, q));
     EXPECT_EQ(d.elements, static_cast<std::size_t>(p));
     EXPECT_NEAR(d.volume, 2 * kPi * kPi / p, 1e-9);
     EXPECT_NEAR(d.inradius, kPi / p, 1e-12);  // the orbit of the origin is a great circle
     EXPECT_LT(d.isometry_error, 1e-14);
     expect_atlas_glued(d);
+    // A lune cut like an orange through its arc, at the p angles its twist turns into each
+    // other; projective space (the antipodal map) is cut by Voronoi cells.
+    if (p >= 4) EXPECT_EQ(d.manifold.pieces.size(), static_cast<std::size_t>(p));
+  }
+  // Past the renderer's cells: refused at once, with the count.
+  try {
+    dirichlet_domain(kS3, lens_space_generators(1100, 1));
+    ADD_FAILURE() << "L(1100, 1) needs 1100 pieces";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("more than 1024 chart pieces"), std::string::npos) << e.what();
   }
 }
 
@@ -167,6 +178,7 @@ TEST(LensSpaces, MirroredLensesGlueMirrorPiecesToThemselves) {
     EXPECT_NEAR(d.volume, 2 * kPi * kPi / n, 1e-9);
     EXPECT_NEAR(d.inradius, kPi / n, 1e-12);  // half the lune's angle 2 pi / n
     expect_atlas_glued(d);
+    EXPECT_EQ(d.manifold.pieces.size(), 4u);  // the lune cut at four angles about its edge
     int self_glued = 0, faces = 0;
     for (const DomainPiece& piece : d.manifold.pieces)
       for (const PieceFace& f : piece.faces) self_glued += f.partner == faces++;
