@@ -342,9 +342,11 @@ test('a .gen file picked on the page opens its space, and W walks through it', a
   await page.setInputFiles('#generator-file', gen);
   await waitFor(() => sentOfType('open').some((m) => typeof m.generators === 'string' &&
                                                      m.generators.includes('Mirrored lens')), 'open {generators}');
-  // Named by the file's first comment line.
+  // Named by the file's first comment line, and rendered at the size the page asks for.
   const title = 'Mirrored lens, dihedral angle 2 pi / 6 (orbifold)';
-  await waitForShownFrame(page, 2, (f) => f.scene === title);
+  const width = Number(await page.inputValue('#width'));
+  const height = Number(await page.inputValue('#height'));
+  await waitForShownFrame(page, 2, (f) => f.scene === title && f.width === width && f.height === height);
   const scene = receivedOfType('scene').at(-1);
   assert.equal(scene.name, title);
   assert.equal(scene.geometry, 'spherical');

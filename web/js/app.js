@@ -53,6 +53,7 @@ let currentScene = null; // the last `scene` message
 let lastFrame = null;    // the last `frame` message (its camera goes into render jobs)
 let openPending = false; // an `open` sent and not yet answered by `scene` or `error`
 let openGenerators = null; // the generator text of the scene rendering now, if it came from one
+let bundled = new Set(); // the server's scene names: a scene by any other name came from generators
 let sceneJustChanged = false; // a `scene` message came and no frame since
 
 const viewer = new Viewer(ui.canvas);
@@ -166,6 +167,7 @@ function onHello(msg) {
 
   const scenes = Array.isArray(msg.scenes) ? msg.scenes : [];
   ui.picker.replaceChildren(...scenes.map((name) => new Option(name, name)));
+  bundled = new Set(scenes);
   ui.picker.disabled = scenes.length === 0;
   viewer.reset(); // a new session numbers its frames afresh
   lastFrame = null;
@@ -182,9 +184,9 @@ function openScene(name) {
 }
 
 // A space given by generators: the server builds its Dirichlet domain and a default scene in
-// it, named `generators`.
+// it, named by the text's first comment line (or `generators`).
 function openSpace(text) {
-  wanted.scene = 'generators';
+  wanted.scene = null;
   wanted.generators = text;
   openPending = connection.send({ type: 'open', generators: text });
 }
@@ -192,8 +194,10 @@ function openSpace(text) {
 function onScene(msg) {
   currentScene = msg;
   sceneJustChanged = true;
-  if (msg.name === wanted.scene) openPending = false;
-  openGenerators = msg.name === 'generators' ? wanted.generators : null;
+  const fromGenerators = !bundled.has(msg.name);
+  const isWanted = wanted.generators ? fromGenerators : msg.name === wanted.scene;
+  if (isWanted) openPending = false;
+  openGenerators = fromGenerators ? wanted.generators : null;
   stats.reset();
   clearErrors();
   selectScene(msg.name);
@@ -202,7 +206,7 @@ function onScene(msg) {
 
   // A fresh session's default scene, with our own `open` already on its way: its settings would
   // be replaced at once, so don't send any.
-  if (!(openPending && msg.name !== wanted.scene)) applyWantedSettings(msg);
+  if (!(openPending && !isWanted)) applyWantedSettings(msg);
 }
 
 // Opening a scene brings that scene's own render settings; re-apply the user's, if any.
