@@ -4,6 +4,8 @@
 #include <cmath>
 #include <set>
 
+#include "scene/default_scene.h"
+
 namespace geodesic::jobs {
 namespace {
 
@@ -104,17 +106,30 @@ Json JobRequest::to_json() const {
 
 ValidatedJob validate_job(const Json& body, const RenderService& service) {
   if (!body.is_object()) fail("body", "must be a JSON object");
-  static const std::set<std::string> known = {"scene",  "camera", "width",        "height",
+  static const std::set<std::string> known = {"scene", "generators", "camera", "width", "height",
                                               "max_depth", "spp", "seconds", "target_error",
                                               "formats"};
   for (const auto& item : body.items())
     if (!known.contains(item.key())) fail(item.key(), "unknown field");
-  if (!body.contains("scene")) fail("scene", "required");
+  if (body.contains("scene") == body.contains("generators"))
+    fail(body.contains("scene") ? "generators" : "scene",
+         "give exactly one of scene and generators");
 
   const ServiceLimits& limits = service.limits();
-  ValidatedJob job{JobRequest{}, resolve_scene(body["scene"], service)};
+  // Generator text becomes the default scene of its space (as a WebSocket `open` makes it),
+  // stored as that document: a restarted daemon reads it as any other.
+  Json scene = body.contains("scene") ? body["scene"] : Json();
+  if (body.contains("generators")) {
+    if (!body["generators"].is_string()) fail("generators", "must be the text of a generator file");
+    try {
+      scene = generator_text_scene(body["generators"].get<std::string>(), "generators");
+    } catch (const SceneError& e) {
+      throw RequestError(e.what());  // "generators: matrix <i> (line <l>): reason"
+    }
+  }
+  ValidatedJob job{JobRequest{}, resolve_scene(scene, service)};
   JobRequest& r = job.request;
-  r.scene = body["scene"];
+  r.scene = scene;
   auto present = [&](const char* field) { return body.contains(field) && !body[field].is_null(); };
   r.width = present("width") ? integer_in(body, "width", 16, limits.max_width)
                              : job.scene.render.width;
@@ -156,7 +171,10 @@ Json JobRecord::status_json(bool detail) const {
   json["id"] = id;
   json["url"] = job_url(id);
   json["state"] = state_name(state);
-  json["scene"] = request["scene"].is_string() ? request["scene"] : Json("document");
+  const Json& scene = request["scene"];
+  json["scene"] = scene.is_string() ? scene
+                  : scene.contains("name") && scene["name"].is_string() ? scene["name"]
+                                                                         : Json("document");
   json["width"] = request["width"];
   json["height"] = request["height"];
   json["created"] = created;

@@ -155,6 +155,32 @@ TEST(JobsApi, CancelQueueLimitAndStates) {
   EXPECT_EQ(api.wait_for(next, [](const json& s) { return s["state"] == "done"; })["samples"], 8);
 }
 
+// A space given only by generator text (what the browser sends for a dropped file) renders in
+// the default scene of its space, and the job keeps that scene document.
+TEST(JobsApi, GeneratorTextRendersItsSpace) {
+  TempDir data;
+  DaemonProcess daemon(data.path() / "data");
+  const JobsApi api(daemon.port());
+  std::ifstream in(GEODESIC_SOURCE_DIR "/catalogue/lens-7-2.gen");
+  const std::string text{std::istreambuf_iterator<char>(in), {}};
+  const int64_t id = api.submit(
+      {{"generators", text}, {"width", 32}, {"height", 24}, {"spp", 4}, {"formats", {"png"}}});
+  const json done = api.wait_for(id, [](const json& s) { return s["state"] != "queued" && s["state"] != "running"; },
+                                 std::chrono::seconds(240));
+  ASSERT_EQ(done["state"], "done") << done.dump();
+  EXPECT_EQ(done["scene"], "Lens space L(7,2)");  // the text's first comment line
+  EXPECT_EQ(done["request"]["scene"]["manifold"]["type"], "generators");
+  EXPECT_FALSE(done["request"].contains("generators"));
+  TempDir downloads;
+  const ApiReply png = api.get(job_path(id, "/result.png"));
+  ASSERT_EQ(png.status, 200u);
+  const Image image = decode(png.body, downloads, "png");
+  ASSERT_EQ(image.width, 32);
+  double brightest = 0;
+  for (float v : image.rgb) brightest = std::max(brightest, double(v));
+  EXPECT_GT(brightest, 0.2);  // the spheres inside the lens space, not an empty frame
+}
+
 TEST(JobsApi, BadRequestsNameTheField) {
   TempDir data;
   DaemonProcess daemon(data.path() / "data");
@@ -181,7 +207,12 @@ TEST(JobsApi, BadRequestsNameTheField) {
   EXPECT_TRUE(starts(error_of(with("colour", "red")), "colour: unknown field"));
   json no_scene = job;
   no_scene.erase("scene");
-  EXPECT_TRUE(starts(error_of(no_scene.dump()), "scene: required"));
+  EXPECT_TRUE(starts(error_of(no_scene.dump()), "scene: give exactly one of scene and generators"));
+  EXPECT_TRUE(starts(error_of(with("generators", "1 0 0 0")), "generators: give exactly one of"));
+  no_scene["generators"] = 42;
+  EXPECT_TRUE(starts(error_of(no_scene.dump()), "generators: must be the text of a generator file"));
+  no_scene["generators"] = "1 0 0 0\n0 1 0\n0 0 1 0\n0 0 0 1\n";
+  EXPECT_TRUE(starts(error_of(no_scene.dump()), "generators: matrix 1 (line 2): row 2 has 3 entries"));
   EXPECT_TRUE(starts(error_of(with("scene", "atlantis")), "scene: unknown bundled scene"));
   const json document = {{"geometry", "euclidean"},
                          {"camera", {{"position", {0, 0, 0}}, {"look_at", {0, 0, -1}}, {"fov_y", 60}}},

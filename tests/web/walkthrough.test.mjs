@@ -33,6 +33,7 @@ let userDataDir;
 let context;
 let page;
 const wsLog = []; // { dir: 'sent' | 'received', msg } for every JSON message on the socket
+const sentJobs = []; // the bodies the page POSTed to /api/jobs
 const pageErrors = []; // uncaught exceptions in the page
 
 before(async () => {
@@ -60,6 +61,9 @@ before(async () => {
     pageErrors.push(err.message);
   });
   recordSocket(page, wsLog);
+  page.on('request', (r) => {
+    if (r.method() === 'POST' && new URL(r.url()).pathname === '/api/jobs') sentJobs.push(JSON.parse(r.postData()));
+  });
 });
 
 after(async () => {
@@ -336,7 +340,7 @@ test('a render job runs to its files, another is cancelled', async () => {
   assert.equal(await page.$(`${running} .job-cancel`), null, 'a cancelled job keeps its cancel button');
 });
 
-test('a .gen file picked on the page opens its space, and W walks through it', async () => {
+test('a .gen file picked on the page opens its space, W walks through it, and a job renders it', async () => {
   // A mirrored lens: its domain is charted in pieces, and two of its faces are mirrors.
   const gen = path.resolve(here, '../../catalogue/mirrored-lens-6.gen');
   await page.setInputFiles('#generator-file', gen);
@@ -351,6 +355,7 @@ test('a .gen file picked on the page opens its space, and W walks through it', a
   assert.equal(scene.name, title);
   assert.equal(scene.geometry, 'spherical');
   assert.match(await page.textContent('#scene-title'), /Mirrored lens.* — spherical, generators/);
+  assert.equal(await page.inputValue('#scene-picker'), '', 'the picker names no bundled scene');
 
   const before = await canvasBlocks(page);
   const movesBefore = sentOfType('move').length;
@@ -360,10 +365,19 @@ test('a .gen file picked on the page opens its space, and W walks through it', a
   await page.keyboard.up('w');
   await waitFor(() => sentOfType('move').length > movesBefore, 'a move inside the lens space');
   const after = await waitForShownFrame(page, 2, (f) => f.scene === title);
-  await page.screenshot({ path: path.join(SCREENSHOT_DIR, 'walkthrough-generators.png') });
   const changed = meanAbsDiff(before, await canvasBlocks(page));
   console.log(`# lens space walk: block diff ${changed.toFixed(2)}, frame ${after.frame}`);
   assert.ok(changed > 1, `walking did not change the view: ${changed}`);
+
+  // A render job of what is on screen: the space itself goes with it, as generator text.
+  const id = await submitJob(2);
+  const posted = sentJobs.at(-1);
+  assert.equal(typeof posted.generators, 'string');
+  assert.equal(posted.scene, undefined);
+  const item = `#job-list li[data-id="${id}"]`;
+  await page.waitForSelector(`${item}[data-state="done"] a:text("png")`, { timeout: 120_000 });
+  assert.match(await page.textContent(`${item} .job-title`), /Mirrored lens/);
+  await page.screenshot({ path: path.join(SCREENSHOT_DIR, 'walkthrough-generators.png') });
 });
 
 test('a bad scene shows its error and the session goes on', async () => {

@@ -227,8 +227,10 @@ function applyWantedSettings(msg) {
 }
 
 function selectScene(name) {
-  // `name` is a bundled name when the scene came from the picker; otherwise leave the picker be.
+  // `name` is a bundled name when the scene came from the picker; a space from generators is
+  // none of them, so the picker shows no choice (and picking any scene then changes it).
   if ([...ui.picker.options].some((o) => o.value === name)) ui.picker.value = name;
+  else ui.picker.selectedIndex = -1;
 }
 
 function handleFrame(meta, jpeg) {
@@ -321,7 +323,8 @@ const jobs = new JobsPanel(
 );
 ui.jobButton.addEventListener('click', () =>
   jobs.submit({
-    scene: currentScene?.name ?? wanted.scene ?? null, // what is rendering now
+    // What is rendering now: a bundled scene, or the space of a dropped generator file.
+    ...(openGenerators ? { generators: openGenerators } : { scene: currentScene?.name ?? wanted.scene ?? null }),
     camera: lastFrame?.camera ?? null,
     width: Number.parseInt(ui.width.value, 10),
     height: Number.parseInt(ui.height.value, 10),
