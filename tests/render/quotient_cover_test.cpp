@@ -64,10 +64,12 @@ void expect_quotient_matches_cover(const std::string& name, const std::vector<Ma
   Scene cover = quotient;
   cover.manifold = Manifold{};
   cover.spheres.clear();
-  // The domain's own face pairings generate Gamma, conjugated to its base point.
-  std::vector<Mat4> pairings;
-  for (const DomainFace& f : domain.manifold.faces) pairings.push_back(f.pairing);
-  const std::vector<Mat4> elements = group_elements(pairings);
+  // Gamma from the generators themselves, conjugated as the domain was: its base point moved
+  // to the origin.
+  const Mat4 move = model::translation_from(kS3, model::exp_origin(kS3, domain.base_point));
+  std::vector<Mat4> moved;
+  for (const Mat4& g : generators) moved.push_back(move * g * model::inverse_isometry(kS3, move));
+  const std::vector<Mat4> elements = group_elements(moved);
   ASSERT_EQ(elements.size(), domain.elements);
   for (const Mat4& g : elements)
     for (const Sphere& s : quotient.spheres)
@@ -99,6 +101,15 @@ void expect_quotient_matches_cover(const std::string& name, const std::vector<Ma
 TEST(QuotientCover, MirroredLensLooksLikeItsCover) {
   expect_quotient_matches_cover("mirrored lens 6", mirrored_lens_generators(6));
   expect_quotient_matches_cover("mirrored lens 4", mirrored_lens_generators(4));
+}
+
+// The antipodal map and two mirrors: the domain reaches the horizon, its bisector normals span
+// more than a plane, so it is cut by Voronoi cells, two of whose walls are mirrors.
+TEST(QuotientCover, VoronoiAtlasWithMirrorsLooksLikeItsCover) {
+  Mat4 x_mirror = Mat4::identity(), y_mirror = Mat4::identity(), antipodal;
+  x_mirror.m[0][0] = y_mirror.m[1][1] = -1;
+  for (int i = 0; i < 4; ++i) antipodal.m[i][i] = -1;
+  expect_quotient_matches_cover("-I and two mirrors", {antipodal, x_mirror, y_mirror});
 }
 
 TEST(QuotientCover, LensSpacesLookLikeTheirCover) {
