@@ -26,25 +26,6 @@ int crossings_for(GeometryKind kind, double inradius) {
   return std::clamp(static_cast<int>(std::ceil(std::numbers::pi / inradius)) + 8, 16, 64);
 }
 
-// A generator text's first comment line, which names its space in Curved Spaces' files and
-// the catalogue's ("#	Mirrored Lens with dihedral angle 2pi/6"); `fallback` without one.
-std::string title_of(const std::string& text, const std::string& fallback) {
-  std::size_t start = text.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0;  // UTF-8 BOM
-  while (start < text.size()) {
-    const std::size_t end = std::min(text.find('\n', start), text.size());
-    const std::string line = text.substr(start, end - start);
-    const std::size_t first = line.find_first_not_of(" \t\r");
-    if (first != std::string::npos) {
-      if (line[first] != '#') return fallback;
-      const std::size_t from = line.find_first_not_of("# \t\r", first);
-      const std::size_t to = line.find_last_not_of(" \t\r");
-      if (from != std::string::npos) return line.substr(from, std::min<std::size_t>(to + 1 - from, 100));
-    }
-    start = end + 1;
-  }
-  return fallback;
-}
-
 }  // namespace
 
 Json default_scene_document(const std::string& title, GeometryKind kind, Json manifold,
@@ -87,7 +68,7 @@ Json default_scene_document(const std::string& title, GeometryKind kind, Json ma
 Json generator_text_scene(const std::string& text, const std::string& source) {
   const GeneratorSet set = parse_generators(text, source);
   const DirichletDomain domain = dirichlet_domain(set.kind, set.generators);
-  return default_scene_document(title_of(text, source), set.kind,
+  return default_scene_document(set.title.empty() ? source : set.title, set.kind,
                                 {{"type", "generators"}, {"text", text}}, domain);
 }
 

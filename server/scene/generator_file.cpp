@@ -41,6 +41,22 @@ std::string_view without_bom(std::string_view text) {
   return text;
 }
 
+// The first comment line's text (at most 100 bytes), when comments open the text.
+std::string first_comment(std::string_view text) {
+  while (!text.empty()) {
+    const std::string_view line = text.substr(0, text.find('\n'));
+    text.remove_prefix(std::min(line.size() + 1, text.size()));
+    const std::size_t first = line.find_first_not_of(" \t\r");
+    if (first == std::string_view::npos) continue;
+    if (line[first] != '#') return {};
+    const std::size_t from = line.find_first_not_of("# \t\r", first);
+    if (from == std::string_view::npos) continue;
+    const std::size_t to = line.find_last_not_of(" \t\r");
+    return std::string(line.substr(from, std::min<std::size_t>(to + 1 - from, 100)));
+  }
+  return {};
+}
+
 // The text with '#' comments blanked out, line breaks kept (for line numbers).
 std::string without_comments(std::string_view text) {
   std::string out;
@@ -193,9 +209,11 @@ GeneratorSet classify(const std::vector<RawMatrix>& raw, const std::string& sour
 
 GeneratorSet parse_generators(std::string_view text, const std::string& source) {
   const std::string bare = without_comments(without_bom(text));
-  return classify(bare.find('[') != std::string::npos ? read_snappy(bare, source)
-                                                      : read_gen(bare, source),
-                  source);
+  GeneratorSet set = classify(bare.find('[') != std::string::npos ? read_snappy(bare, source)
+                                                                  : read_gen(bare, source),
+                              source);
+  set.title = first_comment(without_bom(text));
+  return set;
 }
 
 GeneratorSet generator_set(const std::vector<Mat4>& generators, const std::string& source) {

@@ -22,6 +22,10 @@ namespace geodesic {
 struct GeneratorSet {
   GeometryKind kind = GeometryKind::Euclidean;
   std::vector<Mat4> generators;  // column convention
+  // The text's first comment line, which names the space in Curved Spaces' files and the
+  // catalogue's ("#\tMirrored Lens with dihedral angle 2pi/6"); empty when the text does not
+  // open with one.
+  std::string title;
 };
 
 // Relative isometry tolerance for matrices read from text (entries carry 6 to 20 digits).

@@ -3,8 +3,8 @@
 // face's pairing isometry, or a change of chart) and go on, up to MAX_CROSSINGS times. A space
 // without faces (CELL_CROSSING undefined) traces one chart segment. Walls between the pieces of
 // one domain (INTERNAL_WALLS) do not count: up to MAX_WALL_CROSSINGS of them, as a ray that
-// starts on the edge all the pieces of a lune share passes through many at once. The crossing code is the
-// pairing kind's only (PAIRING_*, server/render/pipeline_features.h).
+// starts on the edge all the pieces of a lune share passes through many at once. The crossing
+// code is the pairing kind's only (PAIRING_*, server/render/pipeline_features.h).
 // Needs ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool any)
 // from the entry point.
 #ifndef GEODESIC_TRACER_GLSL
