@@ -20,7 +20,7 @@ struct FrameUniforms {
   uint32_t max_crossings;     // cell faces a ray may cross
   uint32_t camera_cell;
   uint32_t lighting;        // 0 paper, 1 physical (LightingModel)
-  uint32_t light_sampling;  // 0 MIS, 1 BSDF sampling only (LightSampling)
+  uint32_t light_sampling;  // LightSampling: 0 MIS, 1 BSDF alone, 2 light sampling alone
   uint32_t emitter_count;
   float light_cutoff;       // geodesic distance (1e30: none)
   float clamp;              // largest sample luminance; 0: no clamp

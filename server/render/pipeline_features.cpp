@@ -83,7 +83,7 @@ PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
                                  [](const GpuTriangle& t) { return t.smooth != 0; });
   f.paper = scene.render.lighting == LightingModel::Paper;
   f.physical = !f.paper;
-  f.light_sampling = f.physical && scene.render.light_sampling == LightSampling::Mis &&
+  f.light_sampling = f.physical && scene.render.light_sampling != LightSampling::Bsdf &&
                      !packed.emitters.empty();
   // BSDF sampling never finds a point light: without light sampling they do nothing.
   f.point_lights = f.paper ? !packed.lights.empty()

@@ -32,7 +32,7 @@ FrameUniforms make_uniforms(const Scene& scene, const PackedScene& packed) {
   u.seed = static_cast<uint32_t>(scene.render.seed ^ (scene.render.seed >> 32));
   u.russian_roulette = scene.render.russian_roulette ? 1u : 0u;
   u.lighting = scene.render.lighting == LightingModel::Physical ? 1u : 0u;
-  u.light_sampling = scene.render.light_sampling == LightSampling::Bsdf ? 1u : 0u;
+  u.light_sampling = static_cast<uint32_t>(scene.render.light_sampling);
   u.emitter_count = static_cast<uint32_t>(packed.emitters.size());
   u.light_cutoff = static_cast<float>(packed.light_cutoff);
   u.clamp = static_cast<float>(scene.render.clamp);

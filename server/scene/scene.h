@@ -63,9 +63,11 @@ struct Camera {
 // equation (eq. 2.4) with next-event estimation and multiple importance sampling.
 enum class LightingModel { Paper, Physical };
 
-// How the physical model finds light: both strategies combined by MIS, or BSDF sampling
-// alone (point lights then contribute nothing; for checking MIS).
-enum class LightSampling { Mis, Bsdf };
+// How the physical model finds light: both strategies combined by MIS, BSDF sampling alone
+// (point lights then contribute nothing), or light sampling alone (next-event estimation
+// without MIS; emitters past the light cutoff are still found by BSDF sampling). The last two
+// exist to check the first. The values are the shader's LIGHT_SAMPLING_* constants.
+enum class LightSampling : uint32_t { Mis = 0, Bsdf = 1, Light = 2 };
 
 struct RenderSettings {
   int width = 512;

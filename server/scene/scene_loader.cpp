@@ -377,7 +377,7 @@ RenderSettings read_render(const JsonNode& node) {
         *n, {{"physical", LightingModel::Physical}, {"paper", LightingModel::Paper}});
   if (const auto n = node.find("light_sampling"))
     render.light_sampling = read_choice<LightSampling>(
-        *n, {{"mis", LightSampling::Mis}, {"bsdf", LightSampling::Bsdf}});
+        *n, {{"mis", LightSampling::Mis}, {"bsdf", LightSampling::Bsdf}, {"light", LightSampling::Light}});
   if (const auto n = node.find("light_cutoff")) render.light_cutoff = read_positive(*n);
   if (const auto n = node.find("clamp")) render.clamp = read_positive(*n);
   render.russian_roulette = render.lighting == LightingModel::Physical;

@@ -76,6 +76,10 @@ struct CellFace {
 layout(set = 0, binding = 0) uniform accelerationStructureEXT uScene;
 // Two halves of width * height pixels each: even- and odd-numbered samples (sum rgb, count a).
 layout(set = 0, binding = 1, std430) buffer Accumulation { vec4 accumulation[]; };
+// Frame.lightSampling: LightSampling (server/scene/scene.h) as frame_uniforms.h packs it.
+const uint LIGHT_SAMPLING_MIS = 0u;
+const uint LIGHT_SAMPLING_BSDF = 1u;
+const uint LIGHT_SAMPLING_LIGHT = 2u;
 layout(set = 0, binding = 2, std140) uniform Frame {
   mat4 cameraPose;    // camera frame -> model isometry
   vec4 ambientLight;  // L_a
@@ -90,7 +94,7 @@ layout(set = 0, binding = 2, std140) uniform Frame {
   uint maxCrossings;
   uint cameraCell;
   uint lighting;       // 0 paper, 1 physical
-  uint lightSampling;  // 0 MIS, 1 BSDF sampling only
+  uint lightSampling;  // LIGHT_SAMPLING_MIS, _BSDF (BSDF sampling alone) or _LIGHT (NEE alone)
   uint emitterCount;
   float lightCutoff;   // geodesic distance
   float clampLuminance;  // 0: no clamp

@@ -10,22 +10,47 @@
 #if defined(LIGHT_SAMPLING)
 vec4 rng4(inout uint rng) { return vec4(rngNext(rng), rngNext(rng), rngNext(rng), rngNext(rng)); }
 
-// Direct light at s by one light sample: f cos L / pdf, weighted against BSDF sampling.
+// True when something lies between the surface and the light point. The shadow geodesic
+// starts off the surface and aims at the light point itself (from the shifted start the
+// sample's own direction and distance would reach past a sphere's silhouette, or into a
+// nearby area light), stopping short of an area light by its own surface offset.
+bool occludedTowards(Surface s, LightSample ls) {
+  vec4 origin = offsetFromSurface(s.position, s.geometricNormal);
+  vec4 direction = geodesicDirection(origin, ls.position);
+  float distance = geodesicDistance(origin, ls.position);
+#if defined(GEOMETRY_SPHERICAL)
+  if (ls.distance > PI) {  // the long way round: the light point's own geodesic, not the short one
+    direction = -direction;
+    distance = FULL_TURN - distance;
+  }
+#endif
+  if (dot(direction, direction) == 0.0) return false;
+  float reach = ls.point ? distance : distance - surfaceOffsetLength(ls.position);
+#if defined(HAS_SPHERE_EMITTERS)
+  // A sphere's surface where this geodesic meets it, as traversal will find it: the light
+  // point itself comes from a geodesic that may be long (H3 chords lose 0.05 over 10 units).
+  if (ls.sphereRadius > 0.0) {
+    float surface = intersectGeodesicSphere(origin, direction, ls.sphereCenter, ls.sphereRadius, 0.0, FAR);
+    if (surface > 0.0) reach = surface - surfaceOffsetLength(ls.position);
+  }
+#endif
+  GeodesicRay shadow = GeodesicRay(origin, direction, s.cell, ~0u);
+  return reach > 0.0 && occluded(shadow, reach);
+}
+
+// Direct light at s by one light sample: f cos L / pdf, weighted against BSDF sampling
+// unless light sampling alone is asked for.
 vec3 nextEventEstimate(Surface s, LocalFrame local, vec3 n, vec3 wo, Material m, bool last,
-                       inout uint rng) {
+                       bool lightOnly, inout uint rng) {
   LightSample ls;
   if (!sampleLight(s.position, s.geometricNormal, local, rng4(rng), ls)) return vec3(0.0);
   vec3 wi = toLocal(local, ls.direction);
   float cosI = dot(wi, n);
-  if (cosI <= 0.0 || dot(ls.direction, s.geometricNormal) <= 0.0) return vec3(0.0);
+  if (cosI <= 0.0 || modelInner(ls.direction, s.geometricNormal) <= 0.0) return vec3(0.0);
   vec3 f = bsdfEval(m, n, wo, wi);
   if (max(f.r, max(f.g, f.b)) <= 0.0) return vec3(0.0);
-  vec4 origin = offsetFromSurface(s.position, s.geometricNormal);
-  // Stop short of an area light's own surface; a point light is not in the scene.
-  float reach = ls.point ? ls.distance : ls.distance * (1.0 - 1e-4) - 1e-4;
-  GeodesicRay shadow = GeodesicRay(origin, normalizeTangent(origin, ls.direction), s.cell, ~0u);
-  if (reach > 0.0 && occluded(shadow, reach)) return vec3(0.0);
-  float weight = ls.point || last ? 1.0 : powerHeuristic(ls.pdf, bsdfPdf(m, n, wo, wi));
+  if (occludedTowards(s, ls)) return vec3(0.0);
+  float weight = ls.point || last || lightOnly ? 1.0 : powerHeuristic(ls.pdf, bsdfPdf(m, n, wo, wi));
   return f * cosI * ls.radiance * (weight / ls.pdf);
 }
 #endif
@@ -36,7 +61,8 @@ vec3 physicalRadiance(GeodesicRay ray, inout uint rng) {
   float bsdfDensity = 0.0;
   vec4 from = ray.p, heading = ray.v;  // the last vertex and the direction that left it
 #if defined(LIGHT_SAMPLING)
-  bool nee = frame.lightSampling == 0u && EMITTER_COUNT > 0u;
+  bool nee = frame.lightSampling != LIGHT_SAMPLING_BSDF && EMITTER_COUNT > 0u;
+  bool lightOnly = frame.lightSampling == LIGHT_SAMPLING_LIGHT;
 #else
   const bool nee = false;  // BSDF sampling alone: emission is found by hitting it
 #endif
@@ -51,8 +77,9 @@ vec3 physicalRadiance(GeodesicRay ray, inout uint rng) {
 #if defined(LIGHT_SAMPLING)
       if (misWeighted && s.emitter != ~0u) {
         float cosLight = abs(modelInner(s.incoming, s.geometricNormal));
-        weight = powerHeuristic(bsdfDensity,
-                                lightPdf(s.emitter, from, heading, travelled + s.t, cosLight));
+        float density = lightPdf(s.emitter, from, heading, travelled + s.t, cosLight);
+        // Light sampling alone: what it can sample is its own (a copy past the cutoff is not).
+        weight = lightOnly ? (density > 0.0 ? 0.0 : 1.0) : powerHeuristic(bsdfDensity, density);
       }
 #endif
       radiance += throughput * m.emission.rgb * weight;
@@ -64,7 +91,7 @@ vec3 physicalRadiance(GeodesicRay ray, inout uint rng) {
     bool last = depth == frame.maxDepth;
 #if defined(LIGHT_SAMPLING)
     if (nee && hasSmoothLobe(m))
-      radiance += throughput * nextEventEstimate(s, local, n, wo, m, last, rng);
+      radiance += throughput * nextEventEstimate(s, local, n, wo, m, last, lightOnly, rng);
 #endif
     BsdfSample bs;
     if (!sampleBsdf(m, n, wo, s.frontFace, vec3(rngNext(rng), rngNext(rng), rngNext(rng)), bs))

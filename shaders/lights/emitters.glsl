@@ -25,6 +25,23 @@ vec4 towardPointLight(Emitter e, vec4 x, vec4 c) {
   return vec4(0.0);
 }
 
+// True when every geodesic from a point at distance d from the sphere's centre meets it: the
+// point is inside it, or (S3) the sphere holds the point's antipode (d + r >= pi), where every
+// geodesic from the point passes. Its directions are then the whole sphere, on branch 0 alone.
+bool sphereSurrounds(Emitter e, float d) {
+#if defined(GEOMETRY_SPHERICAL)
+  if (d + e.radius >= PI) return true;
+#endif
+  return d <= e.radius;
+}
+
+// The cosine of the half-angle of the cone a sphere subtends from distance d to its centre,
+// sin(alpha) = sqrt(A(r) / A(d)); -1 (every direction) when it surrounds the point.
+float sphereConeCos(Emitter e, float d) {
+  if (sphereSurrounds(e, d)) return -1.0;
+  return sqrt(max(0.0, 1.0 - sphereAreaFactor(e.radius) / sphereAreaFactor(d)));
+}
+
 // Branch b of the geodesics from a point at distance d: 0 the direct one, 1 the long way
 // round (S3 only).
 #if defined(GEOMETRY_SPHERICAL)
@@ -41,7 +58,7 @@ float branchDistance(float d, uint branch) { return branch == 0u ? d : FULL_TURN
 float branchWeight(Emitter e, float d, uint branch, vec4 toward, vec4 ng) {
   if (branch == 1u && frame.lightCutoff <= PI) return 0.0;
 #if defined(HAS_SPHERE_EMITTERS)
-  if (e.kind == EMITTER_SPHERE && d <= e.radius) return branch == 0u ? 4.0 * PI : 0.0;
+  if (e.kind == EMITTER_SPHERE && sphereSurrounds(e, d)) return branch == 0u ? 4.0 * PI : 0.0;
 #endif
   float spread = max(sphereAreaFactor(branchDistance(d, branch)), 1e-12);
 #if defined(HAS_POINT_LIGHTS)
@@ -63,12 +80,6 @@ float totalBranchWeight(Emitter e, vec4 x, vec4 ng) {
   return total;
 }
 
-// The cosine of the half-angle of the cone a sphere subtends from distance d to its centre,
-// sin(alpha) = sqrt(A(r) / A(d)); -1 (every direction) from inside it.
-float sphereConeCos(Emitter e, float d) {
-  if (d <= e.radius) return -1.0;
-  return sqrt(max(0.0, 1.0 - sphereAreaFactor(e.radius) / sphereAreaFactor(d)));
-}
 
 // The emitter whose cdf range holds u (binary search).
 uint chooseEmitter(float u) {
@@ -95,7 +106,10 @@ float triangleAreaJacobian(Emitter e, vec3 xc) {
 
 struct LightSample {
   vec4 direction;  // unit tangent at the shading point
-  float distance;  // to the light point
+  vec4 position;   // the light point: on the emitter's surface, or the point light's image
+  float distance;  // to the light point along `direction` (past pi: the long way round, S3)
+  vec4 sphereCenter;   // a sphere emitter's image: the shadow geodesic stops at its surface
+  float sphereRadius;  // 0 for other emitters
   vec3 radiance;   // L_e, or I / A(d) for a point light
   float pdf;       // solid-angle density (point light: the probability of the choice)
   bool point;
@@ -104,7 +118,7 @@ struct LightSample {
 // One light sample seen from x (unit local frame `local` at x, geometric normal ng); false
 // when none applies.
 bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) {
-  ls = LightSample(vec4(0.0), 0.0, vec3(0.0), 0.0, false);
+  ls = LightSample(vec4(0.0), vec4(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), 0.0, false);
   if (EMITTER_COUNT == 0u) return false;
   uint index = chooseEmitter(u.x);
   Emitter e = emitters[index];
@@ -138,6 +152,7 @@ bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) 
   ls.pdf = e.pmf * choice;
 #if defined(HAS_POINT_LIGHTS)
   if (e.kind == EMITTER_POINT) {
+    ls.position = c;
     ls.direction = sign * toward;
     ls.distance = branchDistance(d, branch);
     ls.radiance = e.radiance.rgb / max(sphereAreaFactor(ls.distance), 1e-12);
@@ -149,11 +164,14 @@ bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) 
   if (e.kind == EMITTER_SPHERE) {
     // Directions towards the sphere: the cone it subtends.
     float cosMax = sphereConeCos(e, d);
-    vec3 axis = d > e.radius ? sign * toLocal(local, toward) : vec3(0.0, 0.0, 1.0);
+    vec3 axis = cosMax > -1.0 ? sign * toLocal(local, toward) : vec3(0.0, 0.0, 1.0);
     ls.direction = fromLocal(local, sampleUniformCone(axis, cosMax, u.zw));
     float t = intersectGeodesicSphere(x, ls.direction, c, e.radius, 0.0, FAR);
     if (t <= 0.0) return false;
     ls.distance = t;
+    ls.position = normalizePoint(geodesicPoint(x, ls.direction, t));
+    ls.sphereCenter = c;
+    ls.sphereRadius = e.radius;
     ls.radiance = e.radiance.rgb;
     ls.pdf *= 1.0 / (2.0 * PI * (1.0 - cosMax));
     return true;
@@ -172,6 +190,7 @@ bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) 
   if (dot(direct, direct) == 0.0) return false;
   float dy = geodesicDistance(x, y);
   ls.direction = sign * direct;
+  ls.position = y;
   ls.distance = branchDistance(dy, branch);
   float cosLight = abs(modelInner(geodesicTangent(x, ls.direction, ls.distance), normal));
   if (cosLight <= 1e-7) return false;
@@ -194,8 +213,11 @@ float lightPdf(uint index, vec4 x, vec4 direction, float t, float cosLight) {
   if (total <= 0.0) return 0.0;
   vec4 y = normalizePoint(geodesicPoint(x, direction, t));  // the hit point, in x's copy
   uint branch = branchCount() > 1u && t > PI ? 1u : 0u;
-  // The image the geodesic met: the one whose surface passes closest to y.
   uint image = 0u;
+#if defined(CELL_CROSSING)
+  // The image the geodesic met: the one whose surface passes closest to y. (A space without
+  // faces has one image, the emitter itself; there y, far along a long geodesic, may be too
+  // imprecise in float for this test: H3 chords of length 10 lose 0.05.)
   float best = FAR;
   for (uint j = 0u; j < e.imageCount; ++j) {
     float dj = geodesicDistance(y, lightImages[e.imageBegin + j] * e.center);
@@ -209,8 +231,12 @@ float lightPdf(uint index, vec4 x, vec4 direction, float t, float cosLight) {
   float slack = 1e-3 * (1.0 + t);
   if (e.imageCount == 0u || best > (e.kind == EMITTER_SPHERE ? slack : e.radius + slack))
     return 0.0;
+#endif
   mat4 g = lightImages[e.imageBegin + image];
   float d = geodesicDistance(x, g * e.center);
+#if defined(HAS_SPHERE_EMITTERS)
+  if (e.kind == EMITTER_SPHERE && sphereSurrounds(e, d)) branch = 0u;  // sampled on branch 0
+#endif
   float choice = branchWeight(e, d, branch, vec4(0.0), vec4(0.0)) / total;
   if (choice <= 0.0) return 0.0;
 #if defined(HAS_SPHERE_EMITTERS)

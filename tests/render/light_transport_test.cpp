@@ -42,6 +42,15 @@ TEST(WhiteFurnace, HyperbolicSphere) { expect_furnace(scene_from_json(sphere_fur
 
 TEST(WhiteFurnace, SphericalSphere) { expect_furnace(scene_from_json(sphere_furnace("spherical", 1.2)), 256); }
 
+// Enclosures from small to large under the default model (MIS): inside a large sphere light
+// sampling sees it in every direction (in S3 past r = pi/2 the sphere also holds the
+// camera's antipode, and geodesics longer than pi reach its wall); within 1 %. (In H3 from
+// r = 4 the tracer itself loses paths, with BSDF sampling alone too: docs/numerics.md.)
+TEST(WhiteFurnace, EnclosuresOfSeveralSizes) {
+  for (double r : {0.3, 1.0, 3.0}) expect_furnace(scene_from_json(sphere_furnace("hyperbolic", r)), 256);
+  for (double r : {0.5, 2.0, 2.8}) expect_furnace(scene_from_json(sphere_furnace("spherical", r)), 256);
+}
+
 // Without next-event estimation the furnace converges to the same value: emission found by
 // BSDF sampling alone.
 TEST(WhiteFurnace, BsdfSamplingAloneAgrees) {
