@@ -2,9 +2,14 @@
 // depth 5): paths/s and rays/s for each tracing back end the device offers, measured in the
 // same run, with their ratio.
 //   geodesic_bench [SCENE.json] [--spp N] [--device SEL] [--repeat R] [--russian-roulette]
-//                  [--geometry euclidean|hyperbolic|spherical]
+//                  [--geometry euclidean|hyperbolic|spherical] [--size N]
 // --geometry renders the same scene document in another model geometry (its coordinates read
 // as exponential coordinates there): the cost of curvature on a comparable scene.
+//   geodesic_bench --quotients [SCENE.json ...] [--size N] [--spp N] [--repeat R]
+// measures the Cornell box and the quotient scenes (default: the bundled ones and a lens and a
+// Coxeter space of the catalogue), each at its own depth, with the auto back end, in one run:
+// paths/s, the device's counters (chart segments traced per path, face crossings per segment,
+// segments cut off at max_crossings) and the ratio to the Cornell box.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -21,6 +26,8 @@ namespace {
 struct Measurement {
   double paths_per_second = 0;
   double rays_per_second = 0;
+  double paths = 0;
+  TraceCounters counters;  // of the best run
 };
 
 // Best of `repeat` timed runs (after a warm-up sample that also compiles the pipeline): the
@@ -38,9 +45,52 @@ Measurement measure(VulkanContext& ctx, const Scene& scene, BackendKind backend,
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double paths = double(spp) * scene.render.width * scene.render.height;
     if (paths / seconds > best.paths_per_second)
-      best = {paths / seconds, double(renderer.traced_rays()) / seconds};
+      best = {paths / seconds, double(renderer.traced_rays()) / seconds, paths,
+              renderer.trace_counters()};
   }
   return best;
+}
+
+Scene load_for_bench(const std::string& path, int size, bool russian_roulette) {
+  Scene scene = load_scene_file(path);
+  // Full depth unless asked: the physical model's own default would end paths early.
+  scene.render.russian_roulette = russian_roulette;
+  if (size > 0) scene.render.width = scene.render.height = size;
+  return scene;
+}
+
+// The Cornell box, then each scene, at its own depth, with the auto back end.
+int quotient_table(std::vector<std::string> scenes, const std::string& device, int size,
+                   uint32_t spp, int repeat) {
+  const std::string dir = std::string(GEODESIC_SOURCE_DIR) + "/scenes/";
+  if (scenes.empty())
+    for (const char* name :
+         {"mirrored-dodecahedron", "seifert-weber", "poincare-sphere", "torus-cornell",
+          "quarter-turn-space", "catalogue/lens-7-3", "catalogue/coxeter-5-3-4"})
+      scenes.push_back(dir + name + ".json");
+  scenes.insert(scenes.begin(), dir + "cornell-box.json");
+  VulkanContext ctx(device);
+  std::printf("%u spp per run, best of %d, device %s\n", spp, repeat,
+              ctx.description().name.c_str());
+  std::printf("%-24s %5s %9s %7s %9s %9s %10s %9s\n", "scene", "depth", "size", "M p/s",
+              "segs/path", "cross/geo", "truncated", "x Cornell");
+  double cornell = 0;
+  for (const std::string& path : scenes) {
+    const Scene scene = load_for_bench(path, size, false);
+    const Measurement m = measure(ctx, scene, BackendKind::Auto, spp, repeat);
+    if (cornell == 0) cornell = m.paths_per_second;
+    // Each traced segment is one traversal; a geodesic is its first segment and one more per
+    // face crossed; truncated: geodesics cut off at max_crossings, per geodesic.
+    const double segments = double(m.counters.traced_rays);
+    const double geodesics = std::max(segments - double(m.counters.crossed_faces), 1.0);
+    const std::string name = path.substr(path.find_last_of('/') + 1);
+    std::printf("%-24s %5d %4dx%-4d %7.4f %9.2f %9.2f %10.2e %9.3f\n",
+                name.substr(0, name.size() - 5).c_str(), scene.render.max_depth,
+                scene.render.width, scene.render.height, m.paths_per_second / 1e6,
+                segments / m.paths, double(m.counters.crossed_faces) / geodesics,
+                double(m.counters.truncated_rays) / geodesics, m.paths_per_second / cornell);
+  }
+  return 0;
 }
 
 }  // namespace
@@ -50,7 +100,9 @@ int main(int argc, char** argv) {
   std::string device;
   uint32_t spp = 16;
   int repeat = 3;
-  bool russian_roulette = false;
+  bool russian_roulette = false, quotients = false;
+  int size = 0;
+  std::vector<std::string> scenes;
   std::string geometry, lighting;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -60,12 +112,13 @@ int main(int argc, char** argv) {
     else if (a == "--russian-roulette") russian_roulette = true;
     else if (a == "--geometry" && i + 1 < argc) geometry = argv[++i];
     else if (a == "--lighting" && i + 1 < argc) lighting = argv[++i];
-    else scene_path = a;
+    else if (a == "--size" && i + 1 < argc) size = std::stoi(argv[++i]);
+    else if (a == "--quotients") quotients = true;
+    else scenes.push_back(scene_path = a);
   }
   try {
-    Scene scene = load_scene_file(scene_path);
-    // Full depth unless asked: the physical model's own default would end paths early.
-    scene.render.russian_roulette = russian_roulette;
+    if (quotients) return quotient_table(scenes, device, size, spp, repeat);
+    Scene scene = load_for_bench(scene_path, size, russian_roulette);
     if (lighting == "paper") scene.render.lighting = LightingModel::Paper;
     if (lighting == "physical") scene.render.lighting = LightingModel::Physical;
     for (GeometryKind kind :

@@ -30,6 +30,7 @@ class Renderer {
   uint32_t samples() const { return samples_; }
   uint64_t traced_rays() const { return resources_.traced_rays(); }
   uint32_t non_finite_samples() const { return resources_.non_finite_samples(); }
+  TraceCounters trace_counters() const { return resources_.trace_counters(); }
   // Starts over (e.g. after the camera moved); sample indices restart too.
   void reset();
 

@@ -74,8 +74,8 @@ SceneResources::SceneResources(VulkanContext& ctx, const Scene& scene, PipelineV
   upload(kCellFacesBinding, faces_, packed_.faces);
   upload(kEmittersBinding, emitters_, packed_.emitters);
   upload(kLightImagesBinding, light_images_, packed_.light_images);
-  diagnostics_ = GpuBuffer(ctx, sizeof(uint32_t), kStorage);
-  std::memset(diagnostics_.mapped(), 0, sizeof(uint32_t));
+  diagnostics_ = GpuBuffer(ctx, sizeof(DeviceDiagnostics), kStorage);
+  std::memset(diagnostics_.mapped(), 0, sizeof(DeviceDiagnostics));
   create_descriptors();
 }
 
@@ -108,6 +108,9 @@ void SceneResources::set_max_depth(uint32_t max_depth) {
 void SceneResources::clear_accumulation() {
   std::memset(accumulation_.mapped(), 0, accumulation_.size());
   std::memset(ray_counts_.mapped(), 0, ray_counts_.size());
+  // (the constructor clears before the diagnostics buffer exists; it starts zeroed)
+  if (auto* diagnostics = static_cast<DeviceDiagnostics*>(diagnostics_.mapped()))
+    diagnostics->crossed_faces = diagnostics->truncated_rays = 0;
 }
 
 void SceneResources::load_accumulation(const float* sums) {
@@ -115,7 +118,12 @@ void SceneResources::load_accumulation(const float* sums) {
 }
 
 uint32_t SceneResources::non_finite_samples() const {
-  return *static_cast<const uint32_t*>(diagnostics_.mapped());
+  return static_cast<const DeviceDiagnostics*>(diagnostics_.mapped())->non_finite_samples;
+}
+
+TraceCounters SceneResources::trace_counters() const {
+  const auto* diagnostics = static_cast<const DeviceDiagnostics*>(diagnostics_.mapped());
+  return {traced_rays(), diagnostics->crossed_faces, diagnostics->truncated_rays};
 }
 
 uint64_t SceneResources::traced_rays() const {

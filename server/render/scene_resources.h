@@ -15,6 +15,21 @@
 
 namespace geodesic {
 
+// The Diagnostics buffer (binding 14, shaders/common/scene_data.glsl).
+struct DeviceDiagnostics {
+  uint32_t non_finite_samples;  // since the scene was loaded
+  uint32_t crossed_faces;       // since the last clear, walls between pieces included
+  uint32_t truncated_rays;      // rays given up at MAX_CROSSINGS, since the last clear
+};
+
+// What the tracer did since the last clear: chart segments traced (each a traversal), faces
+// crossed, and rays cut off at the crossing bound.
+struct TraceCounters {
+  uint64_t traced_rays = 0;
+  uint64_t crossed_faces = 0;
+  uint64_t truncated_rays = 0;
+};
+
 class SceneResources {
  public:
   SceneResources(VulkanContext& ctx, const Scene& scene,
@@ -47,6 +62,8 @@ class SceneResources {
   uint64_t traced_rays() const;
   // Samples the integrator dropped for being NaN or infinite, since the scene was loaded.
   uint32_t non_finite_samples() const;
+  // The tracer's device counters since the last clear.
+  TraceCounters trace_counters() const;
 
  private:
   void create_descriptors();

@@ -103,8 +103,13 @@ layout(set = 0, binding = 2, std140) uniform Frame {
 layout(set = 0, binding = 4, std430) readonly buffer Materials { Material materials[]; };
 // Rays traced per pixel (camera, bounce and shadow segments), for rays/s figures.
 layout(set = 0, binding = 10, std430) buffer RayCounts { uint rayCounts[]; };
-// Samples dropped because they were NaN or infinite (tests require none).
-layout(set = 0, binding = 14, std430) buffer Diagnostics { uint nonFiniteSamples; };
+// Samples dropped because they were NaN or infinite (tests require none), and the tracer's
+// counters since the last clear: face crossings, and rays cut off at MAX_CROSSINGS.
+layout(set = 0, binding = 14, std430) buffer Diagnostics {
+  uint nonFiniteSamples;
+  uint crossedFacesTotal;
+  uint truncatedRaysTotal;
+};
 #if defined(HAS_SPHERES)
 layout(set = 0, binding = 3, std430) readonly buffer Spheres { Sphere spheres[]; };
 layout(set = 0, binding = 11, std430) readonly buffer SphereRefs { SphereRef sphereRefs[]; };
@@ -157,5 +162,8 @@ layout(push_constant) uniform Push {
 
 // Rays traced by this invocation so far; the entry points' trace functions count into it.
 uint tracedRays = 0u;
+// Faces crossed (walls included) and rays given up at MAX_CROSSINGS by this invocation.
+uint crossedFaces = 0u;
+uint truncatedRays = 0u;
 
 #endif

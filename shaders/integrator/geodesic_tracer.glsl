@@ -103,14 +103,16 @@ bool followGeodesic(inout GeodesicRay ray, float maxDistance, bool anyHit, out C
     if (last) return false;
     travelled += tExit;
     ray = crossFace(ray, face, tExit);
+    ++crossedFaces;
 #if defined(INTERNAL_WALLS)
     if (cellFaces[face].internal != 0u) {
-      if (++walls > MAX_WALL_CROSSINGS) return false;
+      if (++walls > MAX_WALL_CROSSINGS) break;
       continue;
     }
 #endif
     ++crossing;
   }
+  ++truncatedRays;  // ran out of crossings before reaching maxDistance
   return false;
 #endif
 }

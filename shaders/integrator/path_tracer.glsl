@@ -47,6 +47,8 @@ void accumulatePixel(uvec2 launch) {
   accumulation[index] += halves[0];
   accumulation[index + frame.width * frame.height] += halves[1];
   rayCounts[index] += tracedRays;
+  if (crossedFaces != 0u) atomicAdd(crossedFacesTotal, crossedFaces);
+  if (truncatedRays != 0u) atomicAdd(truncatedRaysTotal, truncatedRays);
 }
 
 #endif

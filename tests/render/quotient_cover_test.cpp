@@ -118,5 +118,36 @@ TEST(QuotientCover, LensSpacesLookLikeTheirCover) {
   expect_quotient_matches_cover("L(7,2)", lens_space_generators(7, 2));
 }
 
+// The tracer's device counters add up: with primary rays only and no lights, each pixel's
+// geodesic is one segment plus one per face crossed (a geodesic cut off at max_crossings
+// crossed its last face without tracing on), and exactly the pixels it cut off stay black.
+TEST(QuotientCover, TraceCountersAccountForEverySegment) {
+  for (const auto& [name, generators] :
+       {std::pair{"L(7,2)", lens_space_generators(7, 2)},
+        std::pair{"L(5,1)", lens_space_generators(5, 1)}}) {
+    SCOPED_TRACE(name);
+    const DirichletDomain domain = dirichlet_domain(kS3, generators);
+    Scene quotient = glowing_spheres(domain.inradius);
+    quotient.manifold = domain.manifold;
+    quotient.manifold.max_crossings = 3;  // short: some geodesics are cut off
+    Renderer renderer(device(), quotient);
+    renderer.add_samples(1);
+    const TraceCounters counters = renderer.trace_counters();
+    const Image image = renderer.image();
+    uint64_t black = 0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x)
+        black += image.at(x, y, 0) == 0 && image.at(x, y, 1) == 0 && image.at(x, y, 2) == 0;
+    const uint64_t pixels = uint64_t(image.width) * image.height;
+    EXPECT_GT(counters.crossed_faces, pixels / 2);
+    EXPECT_GT(counters.truncated_rays, 0u);
+    EXPECT_EQ(counters.truncated_rays, black);
+    EXPECT_EQ(counters.traced_rays, pixels + counters.crossed_faces - counters.truncated_rays);
+    renderer.reset();  // the counters start over with the accumulation
+    EXPECT_EQ(renderer.trace_counters().crossed_faces, 0u);
+    EXPECT_EQ(renderer.trace_counters().traced_rays, 0u);
+  }
+}
+
 }  // namespace
 }  // namespace geodesic::test
