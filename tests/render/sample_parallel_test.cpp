@@ -12,9 +12,7 @@ namespace geodesic::test {
 namespace {
 
 Scene small_cornell_box() {
-  Scene scene = load_scene_file(source_path("scenes/cornell-box.json"));
-  scene.render.width = 24;
-  scene.render.height = 16;
+  Scene scene = small_scene("scenes/cornell-box.json", 24, 16);
   scene.render.max_depth = 3;
   return scene;
 }
