@@ -60,7 +60,7 @@ if [ "$mode" = --all ]; then
   packages+=(git python3 vulkan-tools openimageio-tools libgtest-dev libgmock-dev)
   # tests/deploy: the image built and probed with podman (runc: crun fails on hybrid cgroups)
   # from base images debootstrap makes, and a one-node Slurm cluster.
-  packages+=(podman runc containernetworking-plugins debootstrap
+  packages+=(podman runc containernetworking-plugins podman-compose debootstrap curl
              slurmctld slurmd slurm-client munge)
 fi
 # Browser tests of the web client (tests/web): Debian's Chromium, driven by playwright-core

@@ -27,6 +27,7 @@ cleanup() {
   rm -rf "$tmp"
 }
 trap cleanup EXIT
+trap 'exit 143' TERM INT  # timeout(1): clean up too
 skip() {
   echo "slurm test: SKIPPED: $1 (the Slurm split-and-merge test did not run)"
   for log in "$tmp"/*.log; do [ -f "$log" ] && { echo "--- $log"; tail -n 15 "$log"; }; done
