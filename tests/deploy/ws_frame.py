@@ -35,6 +35,7 @@ def read(n):
     return out
 
 
+message, opcode = b"", 0
 while time.monotonic() - start < timeout:
     b0, b1 = read(2)
     length = b1 & 0x7F
@@ -43,11 +44,14 @@ while time.monotonic() - start < timeout:
     elif length == 127:
         length = struct.unpack(">Q", read(8))[0]
     payload = read(length)
-    if b0 & 0x0F == 2:  # binary (unfragmented: the daemon sends each JPEG whole)
-        if not payload.startswith(b"\xff\xd8\xff"):
-            sys.exit("ws: a binary message that is not a JPEG")
-        print(f"ws: JPEG frame of {len(payload)} bytes {time.monotonic() - start:.1f} s after connecting")
-        sys.exit(0)
     if b0 & 0x0F == 8:
         sys.exit("ws: the server closed the socket")
+    if b0 & 0x0F in (1, 2):  # a new message; 0 continues a fragmented one
+        message, opcode = b"", b0 & 0x0F
+    message += payload
+    if b0 & 0x80 and opcode == 2:  # the last fragment of a binary message
+        if not (message.startswith(b"\xff\xd8\xff") and message.endswith(b"\xff\xd9")):
+            sys.exit("ws: a binary message that is not a whole JPEG")
+        print(f"ws: JPEG frame of {len(message)} bytes {time.monotonic() - start:.1f} s after connecting")
+        sys.exit(0)
 sys.exit(f"ws: no JPEG frame within {timeout} s")
