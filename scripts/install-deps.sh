@@ -2,9 +2,12 @@
 # Installs everything Geodesic needs to build and test on Debian 12 (bookworm), as root.
 # Lavapipe with ray tracing needs Mesa >= 24.1, which bookworm only has in backports; the
 # backports entry is derived from the machine's own Debian sources so no mirror is hard-coded.
-#   install-deps.sh            build and test (the README's steps)
-#   install-deps.sh --build    build only: no browser, Node.js or linters (docker/Dockerfile)
-#   install-deps.sh --runtime  what `geodesic serve` needs to run (the container's last stage)
+#   install-deps.sh            build and test (the README's test command, CI)
+#   install-deps.sh --build    build and run the daemon only: no test libraries, browser,
+#                              Node.js, clang or container tools (scripts/run.sh, the image's
+#                              build stage)
+#   install-deps.sh --runtime  the container's last stage: lavapipe, the Vulkan loader and curl
+#                              (the image copies the binary's own libraries, docker/bundle-libs.sh)
 set -euo pipefail
 
 mode=${1:---all}
@@ -40,19 +43,25 @@ debian_archive_uri() {
 }
 
 if [ "$mode" = --runtime ]; then
-  # The shared libraries the binary links (their own dependencies follow), and curl for the
-  # container's health check.
-  packages=(libvulkan1 libopenimageio2.4 libturbojpeg0 libassimp5 libminizip1 libdraco7
-            libsqlite3-0 curl)
+  # The Vulkan loader (lavapipe follows below) and curl for the container's health check.
+  packages=(libvulkan1 curl)
 else
+  # zlib1g-dev: assimp's CMake package links libz.so, and libassimp-dev does not depend on it.
+  # glslang-tools: glslang's CMake package names glslangValidator.
   packages=(
-    build-essential cmake ninja-build pkg-config git ca-certificates
-    libvulkan-dev vulkan-tools glslang-tools glslang-dev spirv-tools
-    nlohmann-json3-dev libopenimageio-dev openimageio-tools
-    libgtest-dev libgmock-dev libassimp-dev
-    libboost-dev libboost-system-dev libsqlite3-dev libturbojpeg0-dev
-    python3
+    build-essential cmake ninja-build pkg-config ca-certificates
+    libvulkan-dev glslang-tools glslang-dev spirv-tools
+    nlohmann-json3-dev libopenimageio-dev libassimp-dev zlib1g-dev
+    libboost-dev libsqlite3-dev libturbojpeg0-dev
   )
+fi
+# The test suites and their tools.
+if [ "$mode" = --all ]; then
+  packages+=(git python3 vulkan-tools openimageio-tools libgtest-dev libgmock-dev)
+  # tests/deploy: the image built and probed with podman (runc: crun fails on hybrid cgroups)
+  # from base images debootstrap makes, and a one-node Slurm cluster.
+  packages+=(podman runc containernetworking-plugins podman-compose debootstrap curl
+             slurmctld slurmd slurm-client munge)
 fi
 # Browser tests of the web client (tests/web): Debian's Chromium, driven by playwright-core
 # from npm, which also brings the linters of docker/ and proto/openapi.json. Node.js only if

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The whole test suite on a fresh Debian 12 machine: installs what is missing, builds, and
 # runs every test with ctest (unit tests, then render tests on lavapipe), then the hardening
-# checks (scripts/test-hardening.sh: sanitizers and fuzzers).
+# checks (scripts/test-hardening.sh: sanitizers and fuzzers), then the deployment on a real
+# container engine (podman): the image built and probed, and the run command on a bare Debian.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
@@ -9,3 +10,22 @@ bash scripts/build.sh
 ctest --test-dir build --output-on-failure -j 2
 # Then the sanitizer build with the whole suite again, and the fuzzers (bounded runs).
 bash scripts/test-hardening.sh
+
+# A deployment step, bounded and timed; exit 77 means the engine cannot start on this machine:
+# the step is skipped, loudly, rather than failed.
+deploy_step() {
+  local limit=$1 start status=0
+  shift
+  start=$(date +%s)
+  timeout --kill-after=30 "$limit" bash "$@" || status=$?
+  if [ "$status" -eq 77 ]; then
+    echo "test: SKIPPED $1 (see its message above) after $(( $(date +%s) - start )) s"
+  elif [ "$status" -ne 0 ]; then
+    echo "test: $1 FAILED (status $status) after $(( $(date +%s) - start )) s" >&2
+    return 1
+  else
+    echo "test: $1 passed in $(( $(date +%s) - start )) s"
+  fi
+}
+deploy_step 1800 tests/deploy/image_test.sh
+deploy_step 1500 tests/deploy/fresh_run_test.sh 1400

@@ -9,6 +9,7 @@ int render_command(int argc, char** argv);
 int devices_command(int argc, char** argv);
 int serve_command(int argc, char** argv);
 int catalogue_command(int argc, char** argv);
+int merge_command(int argc, char** argv);
 }  // namespace geodesic
 
 namespace {
@@ -21,6 +22,10 @@ const char* kUsage =
     "         [--device NAME|INDEX] [--lighting physical|paper]\n"
     "         [--backend auto|ray-query|pipeline] [--dump-shaders DIR]\n"
     "         [--pipeline specialised|all-features] [--pipeline-cache DIR]\n"
+    "         [--samples-from K --samples N --accumulation PART.exr]  a part of a\n"
+    "                sample-parallel render: sample indices [K, K+N), the un-normalised sums\n"
+    "  merge PART.exr... -o OUT.{png,exr,jpg} [--accumulation ALL.exr] [--report FILE.json]\n"
+    "                sum the parts' accumulations into one image (one render of all samples)\n"
     "  render --generators FILE.gen -o OUT ...  the same options, rendering a default scene\n"
     "                inside the space of a generator file (Curved Spaces .gen or SnapPy)\n"
     "  catalogue [ROOT]  write the manifold catalogue (ROOT/catalogue/*.gen, README.md and\n"
@@ -49,6 +54,7 @@ int main(int argc, char** argv) {
     if (command == "render") return geodesic::render_command(argc - 2, argv + 2);
     if (command == "devices") return geodesic::devices_command(argc - 2, argv + 2);
     if (command == "serve") return geodesic::serve_command(argc - 2, argv + 2);
+    if (command == "merge") return geodesic::merge_command(argc - 2, argv + 2);
     if (command == "catalogue") return geodesic::catalogue_command(argc - 2, argv + 2);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "geodesic %s: %s\n", command.c_str(), e.what());

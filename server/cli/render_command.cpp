@@ -9,6 +9,7 @@
 
 #include "cli/progress_bar.h"
 #include "cli/render_report.h"
+#include "render/accumulation_file.h"
 #include "render/convergence.h"
 #include "render/image_io.h"
 #include "render/pipeline_cache.h"
@@ -24,6 +25,10 @@ struct RenderArgs {
   std::string scene, generators, output, device, backend = "auto", lighting;
   std::optional<int> spp, width, height, max_depth;
   std::optional<uint64_t> seed;
+  // A part of a sample-parallel render: sample indices from --samples-from, the accumulation
+  // written to --accumulation (geodesic merge sums the parts).
+  uint32_t samples_from = 0;
+  std::string accumulation;
   std::optional<double> seconds, target_error;
   std::string report;  // --report FILE.json: the series, also as FILE.csv
   std::string dump_shaders, pipeline_cache;
@@ -53,7 +58,16 @@ RenderArgs parse(int argc, char** argv) {
       return argv[++i];
     };
     if (flag == "-o" || flag == "--output") a.output = value();
-    else if (flag == "--spp") a.spp = parse_int(flag, value(), 1, 1 << 24);
+    else if (flag == "--spp" || flag == "--samples") {
+      if (a.spp) throw std::invalid_argument("--spp and --samples: give one");
+      a.spp = parse_int(flag, value(), 1, 1 << 24);
+    }
+    else if (flag == "--samples-from") a.samples_from = uint32_t(parse_int(flag, value(), 0, 1 << 30));
+    else if (flag == "--accumulation") {
+      a.accumulation = value();
+      if (std::filesystem::path(a.accumulation).extension() != ".exr")
+        throw std::invalid_argument("--accumulation: must name a .exr file");
+    }
     else if (flag == "--time") {
       const std::string v = value();
       double s = 0;
@@ -104,7 +118,8 @@ RenderArgs parse(int argc, char** argv) {
   }
   if (a.scene.empty() == a.generators.empty())
     throw std::invalid_argument("give one of SCENE.json and --generators FILE.gen");
-  if (a.output.empty()) throw std::invalid_argument("missing -o OUT.{png,exr,jpg}");
+  if (a.output.empty() && a.accumulation.empty())
+    throw std::invalid_argument("missing -o OUT.{png,exr,jpg} (or --accumulation OUT.exr)");
   // Exactly one stop condition; the scene's spp when none is given.
   std::vector<std::string> stops;
   if (a.spp) stops.push_back("--spp");
@@ -115,12 +130,19 @@ RenderArgs parse(int argc, char** argv) {
   return a;
 }
 
+// What a part's samples are of: parts merge only when this matches.
+std::string view_identity(const std::string& source, const Scene& scene) {
+  return std::filesystem::path(source).filename().string() + " seed " +
+         std::to_string(scene.render.seed) + " depth " + std::to_string(scene.render.max_depth) +
+         (scene.render.lighting == LightingModel::Paper ? " paper" : " physical");
+}
+
 }  // namespace
 
 int render_command(int argc, char** argv) {
   const RenderArgs args = parse(argc, argv);
   const BackendKind backend = parse_backend(args.backend);
-  check_output_format(args.output);
+  if (!args.output.empty()) check_output_format(args.output);
   // A generator file gets the default scene inside its Dirichlet domain.
   Scene scene = args.generators.empty() ? load_scene_file(args.scene)
                                         : parse_scene(generator_file_scene(args.generators), {});
@@ -147,6 +169,10 @@ int render_command(int argc, char** argv) {
   std::printf("pipeline: %s; %zu KiB of SPIR-V, built in %.2f s\n",
               renderer.features().summary().c_str(), pipeline.spirv_bytes / 1024,
               pipeline.build_seconds);
+  // A part starts at sample index --samples-from, on empty sums; its own count is what the stop
+  // conditions see.
+  const uint32_t first = args.samples_from;
+  if (first > 0) renderer.restore(first, std::vector<float>(renderer.accumulation().size(), 0.0f));
   ProgressBar bar;
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
@@ -159,7 +185,7 @@ int render_command(int argc, char** argv) {
   ErrorSample now;
   const char* stopped_by = nullptr;
   while (!(stopped_by = stop.met(now))) {
-    if (stop.spp) batch = std::min(batch, *stop.spp - renderer.samples());
+    if (stop.spp) batch = std::min(batch, *stop.spp - (renderer.samples() - first));
     // Error falls as 1/sqrt(spp): do not overshoot the samples the target needs by much.
     if (stop.target_error && now.error > 0 && now.spp >= 8) {
       const double needed = now.spp * std::pow(now.error / *stop.target_error, 2) - now.spp;
@@ -169,7 +195,7 @@ int render_command(int argc, char** argv) {
     renderer.add_samples(batch);
     const double took = elapsed() - before;
     if (took < 0.25 && batch < 64) batch *= 2;
-    now = {elapsed(), renderer.samples(), renderer.estimated_error()};
+    now = {elapsed(), renderer.samples() - first, renderer.estimated_error()};
     log.record(now);
     const std::string error =
         now.error >= 0 ? ", error " + std::to_string(now.error).substr(0, 6) : "";
@@ -178,18 +204,27 @@ int render_command(int argc, char** argv) {
   }
   const double seconds = elapsed();
   bar.finish();
-  write_image(args.output, renderer.image());
+  const uint32_t rendered = renderer.samples() - first;
+  if (!args.output.empty()) write_image(args.output, renderer.image());
+  if (!args.accumulation.empty()) {
+    const auto sums = renderer.accumulation();
+    write_accumulation(args.accumulation,
+                       {renderer.width(), renderer.height(), first, rendered,
+                        view_identity(args.scene.empty() ? args.generators : args.scene, scene),
+                        std::vector<float>(sums.begin(), sums.end())});
+    std::printf("%s: samples [%u, %u)\n", args.accumulation.c_str(), first, first + rendered);
+  }
 
-  const double paths = double(renderer.samples()) * scene.render.width * scene.render.height;
+  const double paths = double(rendered) * scene.render.width * scene.render.height;
   std::printf("%s: %u spp at %dx%d, depth %d, in %.2f s: %.3f M paths/s (%s on %s)\n",
-              args.output.c_str(), renderer.samples(), scene.render.width, scene.render.height,
+              (args.output.empty() ? args.accumulation : args.output).c_str(), rendered, scene.render.width, scene.render.height,
               scene.render.max_depth, seconds, paths / seconds / 1e6, renderer.backend_name(),
               ctx.description().name.c_str());
   if (!args.report.empty()) {
     RenderReport report{args.scene.empty() ? args.generators : args.scene,
                         geometry_name(scene.geometry), ctx.description().name,
                         renderer.backend_name(), scene.render.width, scene.render.height,
-                        renderer.samples(), seconds, now.error, stop, stopped_by, log};
+                        rendered, seconds, now.error, stop, stopped_by, log};
     write_render_report(args.report, report);
   }
   return 0;

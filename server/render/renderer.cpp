@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "render/accumulation_file.h"
 #include "render/relative_error.h"
 
 namespace geodesic {
@@ -56,19 +57,8 @@ void Renderer::restore(uint32_t samples, std::span<const float> sums) {
 }
 
 Image Renderer::image() const {
-  Image image;
-  image.width = width();
-  image.height = height();
-  const size_t pixels = size_t(image.width) * image.height;
-  image.rgb.resize(pixels * 3);
   const float* even = resources_.accumulation();
-  const float* odd = even + pixels * 4;
-  for (size_t p = 0; p < pixels; ++p) {
-    const float count = even[p * 4 + 3] + odd[p * 4 + 3];
-    for (int c = 0; c < 3; ++c)
-      image.rgb[p * 3 + c] = count > 0 ? (even[p * 4 + c] + odd[p * 4 + c]) / count : 0;
-  }
-  return image;
+  return mean_image(even, even + size_t(width()) * height() * 4, width(), height());
 }
 
 double Renderer::estimated_error() const {

@@ -270,5 +270,42 @@ TEST(Cli, CatalogueWritesTheCommittedFiles) {
   std::filesystem::remove_all(root);
 }
 
+TEST(Cli, SampleParallelPartsMergeIntoOneRenderOfAllTheirSamples) {
+  const std::string scene = source_path("scenes/cornell-box.json").string() +
+                            " --width 24 --height 16 --max-depth 2";
+  const auto a = temp_file("-a.exr"), b = temp_file("-b.exr"), merged = temp_file("-merged.exr");
+  const auto full = temp_file("-full.exr"), report = temp_file("-merge.json");
+  const auto full_report = temp_file("-full.json");
+  CliRun r = run_cli("render " + scene + " --samples-from 0 --samples 6 --accumulation " + a.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("samples [0, 6)"), std::string::npos) << r.output;
+  r = run_cli("render " + scene + " --samples-from 6 --samples 6 --accumulation " + b.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  r = run_cli("merge " + b.string() + " " + a.string() + " -o " + merged.string() + " --report " +
+              report.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("2 parts, 12 spp at 24x16"), std::string::npos) << r.output;
+  r = run_cli("render " + scene + " --spp 12 -o " + full.string() + " --report " + full_report.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+
+  // The same samples, summed in another order: equal up to float round-off.
+  const Image m = read_image(merged), f = read_image(full);
+  ASSERT_EQ(m.rgb.size(), f.rgb.size());
+  for (size_t i = 0; i < f.rgb.size(); ++i) ASSERT_NEAR(m.rgb[i], f.rgb[i], 1e-5 * (1 + f.rgb[i])) << i;
+  const auto merge_json = nlohmann::json::parse(std::ifstream(report));
+  const auto full_json = nlohmann::json::parse(std::ifstream(full_report));
+  EXPECT_EQ(merge_json["samples"], 12);
+  EXPECT_EQ(merge_json["parts"].size(), 2u);
+  const double expected = full_json["estimated_error"].get<double>();
+  EXPECT_NEAR(merge_json["estimated_error"].get<double>(), expected, 1e-4 * expected);
+
+  // A part given twice overlaps itself.
+  r = run_cli("merge " + a.string() + " " + a.string() + " -o " + merged.string());
+  EXPECT_EQ(r.exit_code, 1) << r.output;
+  EXPECT_NE(r.output.find("overlap"), std::string::npos) << r.output;
+  for (const auto& file : {a, b, merged, full, report, full_report}) std::filesystem::remove(file);
+  std::filesystem::remove(full_report.parent_path() / (full_report.stem().string() + ".csv"));
+}
+
 }  // namespace
 }  // namespace geodesic::test

@@ -28,6 +28,14 @@ inline Scene scene_from_json(const std::string& text) {
   return parse_scene(nlohmann::ordered_json::parse(text), source_path("scenes"));
 }
 
+// A bundled scene file (relative to the source tree) at a small resolution.
+inline Scene small_scene(const std::string& relative, int width, int height) {
+  Scene scene = load_scene_file(source_path(relative));
+  scene.render.width = width;
+  scene.render.height = height;
+  return scene;
+}
+
 // The scene under the paper's lighting model with its defaults (no Russian roulette): the
 // model the geometry tests were written against (eq. 2.2 is deterministic per hit).
 inline Scene paper_model(Scene scene) {
