@@ -220,11 +220,16 @@ int render_command(int argc, char** argv) {
               (args.output.empty() ? args.accumulation : args.output).c_str(), rendered, scene.render.width, scene.render.height,
               scene.render.max_depth, seconds, paths / seconds / 1e6, renderer.backend_name(),
               ctx.description().name.c_str());
+  const uint64_t non_finite = renderer.non_finite_samples();
+  const uint64_t truncated = renderer.trace_counters().truncated_rays;
+  std::printf("%llu non-finite samples, %llu geodesics cut off at %d crossings\n",
+              static_cast<unsigned long long>(non_finite), static_cast<unsigned long long>(truncated),
+              scene.manifold.max_crossings);
   if (!args.report.empty()) {
     RenderReport report{args.scene.empty() ? args.generators : args.scene,
                         geometry_name(scene.geometry), ctx.description().name,
                         renderer.backend_name(), scene.render.width, scene.render.height,
-                        rendered, seconds, now.error, stop, stopped_by, log};
+                        rendered, seconds, now.error, stop, stopped_by, log, non_finite, truncated};
     write_render_report(args.report, report);
   }
   return 0;

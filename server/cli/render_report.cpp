@@ -29,6 +29,8 @@ void write_render_report(const std::filesystem::path& json_path, const RenderRep
       r.estimated_error >= 0 ? nlohmann::ordered_json(r.estimated_error) : nullptr;
   json["stop"] = r.stop.to_json();
   json["stop"]["reached"] = r.stopped_by;
+  json["non_finite_samples"] = r.non_finite_samples;
+  json["truncated_geodesics"] = r.truncated_geodesics;
   json["series"] = r.log.to_json()["series"];
   write_file(json_path, json.dump(2) + "\n");
   std::filesystem::path csv_path = json_path;

@@ -18,6 +18,10 @@ struct RenderReport {
   StopCondition stop;
   std::string stopped_by;  // StopCondition::met's name of the condition that ended the render
   ConvergenceLog log;
+  // Samples whose value was NaN or infinite (dropped, counted as black), and geodesics cut off
+  // at the scene's crossing bound (they return black: docs/numerics.md).
+  uint64_t non_finite_samples = 0;
+  uint64_t truncated_geodesics = 0;
 };
 
 // Writes `json_path` and the CSV with the same stem; throws std::runtime_error naming the file

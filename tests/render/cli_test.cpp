@@ -153,6 +153,27 @@ TEST(Cli, TargetErrorStopsAtTheFirstEstimateBelowIt) {
   std::filesystem::remove(std::filesystem::path(report).replace_extension(".csv"));
 }
 
+// The summary and the report count non-finite samples and geodesics cut off at the crossing
+// bound: none in the Euclidean box, some in Seifert-Weber at its own bound of 10 crossings.
+TEST(Cli, SummaryAndReportCountNonFiniteSamplesAndCutOffGeodesics) {
+  for (const auto& [scene, cut_off] : {std::pair{"cornell-box", false}, std::pair{"seifert-weber", true}}) {
+    const auto out = temp_file(".png"), report = temp_file(".json");
+    const CliRun r = run_cli("render " + source_path(std::string("scenes/") + scene + ".json").string() +
+                             " -o " + out.string() + " --spp 2 --width 24 --height 24 --report " +
+                             report.string());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    const nlohmann::json j = read_json(report);
+    EXPECT_EQ(j.at("non_finite_samples"), 0) << scene;
+    const uint64_t truncated = j.at("truncated_geodesics").get<uint64_t>();
+    EXPECT_EQ(truncated > 0, cut_off) << scene << ": " << truncated;
+    EXPECT_NE(r.output.find("0 non-finite samples, " + std::to_string(truncated) + " geodesics cut off"),
+              std::string::npos)
+        << r.output;
+    for (const auto& f : {out, report}) std::filesystem::remove(f);
+    std::filesystem::remove(std::filesystem::path(report).replace_extension(".csv"));
+  }
+}
+
 TEST(Cli, ReportJsonAndCsvCarryTheSameSeriesOfFallingError) {
   const auto out = temp_file(".png"), report = temp_file(".json");
   auto csv_path = report;
