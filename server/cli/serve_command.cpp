@@ -31,7 +31,7 @@ struct ServeOptions {
 
 constexpr const char* kFlags[] = {"--host", "--port", "--device", "--web", "--data", "--token",
                                   "--max-jobs", "--max-queue", "--checkpoint-seconds",
-                                  "--max-sessions"};
+                                  "--max-sessions", "--prepare-seconds", "--keep-jobs"};
 
 // $XDG_DATA_HOME/geodesic, else ~/.local/share/geodesic (the XDG base directory default).
 std::filesystem::path default_data_dir() {
@@ -71,6 +71,9 @@ void apply(ServeOptions& options, const std::string& flag, const std::string& va
   else if (flag == "--checkpoint-seconds")
     options.jobs.checkpoint_seconds = double(integer(flag, value, 1, 86400));
   else if (flag == "--max-sessions") options.limits.max_sessions = int(integer(flag, value, 1, 1024));
+  else if (flag == "--keep-jobs") options.jobs.keep_jobs = int(integer(flag, value, 0, 1000000));
+  else if (flag == "--prepare-seconds")
+    options.server.preparation_seconds = double(integer(flag, value, 1, 3600));
   else throw std::invalid_argument("unknown option " + flag);
 }
 
@@ -86,6 +89,10 @@ ServeOptions parse(int argc, char** argv) {
     apply(options, flag, argv[++i]);
   }
   if (options.jobs.data_dir.empty()) options.jobs.data_dir = default_data_dir();
+  // The listener takes addresses only: the name every resolver gives the loopback is mapped.
+  if (options.server.host == "localhost") options.server.host = "127.0.0.1";
+  if (const std::string why = net::usable_token(options.server.token); !why.empty())
+    throw std::invalid_argument("--token: " + why);
   // Anyone who can reach a public address could otherwise use the device and read every job.
   if (options.server.token.empty() && !net::is_loopback(options.server.host))
     throw std::invalid_argument("--token: required when listening on " + options.server.host +

@@ -138,7 +138,15 @@ ValidatedJob validate_job(const Json& body, const RenderService& service) {
   if (r.width > limits.max_width) fail("width", "the scene's width is over this server's limit");
   if (r.height > limits.max_height) fail("height", "the scene's height is over this server's limit");
   if (present("max_depth")) r.max_depth = integer_in(body, "max_depth", 0, limits.max_depth);
-  if (present("camera")) r.camera = parse_camera(body["camera"]);
+  if (present("camera")) {
+    // Checked as a scene's "pose" is: an isometry of the scene's space, within round-off.
+    const Mat4 camera = parse_camera(body["camera"]);
+    const double error = model::isometry_error(job.scene.geometry, camera);
+    if (!(error < 1e-6))
+      fail("camera", std::string("not an isometry of ") + geometry_name(job.scene.geometry) +
+                         " space (error " + std::to_string(error) + " > 1e-06)");
+    r.camera = model::reorthonormalize(job.scene.geometry, camera);
+  }
 
   const int stops = present("spp") + present("seconds") + present("target_error");
   if (stops != 1) fail("spp", "give exactly one stop condition: spp, seconds or target_error");
@@ -156,6 +164,7 @@ ValidatedJob validate_job(const Json& body, const RenderService& service) {
 }
 
 ConvergenceLog series_from_json(const Json& series) {
+  if (!series.is_array()) throw std::invalid_argument("series: not an array");
   ConvergenceLog log;
   for (const Json& point : series)
     log.record({point.at("seconds").get<double>(), point.at("spp").get<uint32_t>(),
@@ -166,17 +175,27 @@ ConvergenceLog series_from_json(const Json& series) {
 
 std::string job_url(int64_t id) { return "/api/jobs/" + std::to_string(id); }
 
+std::vector<std::string> stored_formats(const Json& request) {
+  std::vector<std::string> formats;
+  if (const auto it = request.find("formats"); it != request.end() && it->is_array())
+    for (const Json& format : *it)
+      if (format.is_string()) formats.push_back(format.get<std::string>());
+  return formats;
+}
+
 Json JobRecord::status_json(bool detail) const {
   Json json;
   json["id"] = id;
   json["url"] = job_url(id);
   json["state"] = state_name(state);
-  const Json& scene = request["scene"];
+  // The request may be an empty object: a damaged stored row (job_store.cpp) reads as failed.
+  const Json scene = request.value("scene", Json());
   json["scene"] = scene.is_string() ? scene
-                  : scene.contains("name") && scene["name"].is_string() ? scene["name"]
-                                                                         : Json("document");
-  json["width"] = request["width"];
-  json["height"] = request["height"];
+                  : scene.is_object() && scene.contains("name") && scene["name"].is_string()
+                      ? scene["name"]
+                      : Json("document");
+  json["width"] = request.value("width", Json());
+  json["height"] = request.value("height", Json());
   json["created"] = created;
   json["progress"] = progress;
   json["samples"] = samples;
@@ -186,8 +205,8 @@ Json JobRecord::status_json(bool detail) const {
   json["message"] = message.empty() ? Json(nullptr) : Json(message);
   Json results = Json::object();
   if (state == JobState::Done)
-    for (const Json& format : request["formats"])
-      results[format.get<std::string>()] = job_url(id) + "/result." + format.get<std::string>();
+    for (const std::string& format : stored_formats(request))
+      results[format] = job_url(id) + "/result." + format;
   json["results"] = results;
   json["report"] = {{"json", job_url(id) + "/report.json"}, {"csv", job_url(id) + "/report.csv"}};
   if (detail) {

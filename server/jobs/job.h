@@ -70,6 +70,9 @@ struct JobRecord {
 // The inverse of ConvergenceLog::to_json()["series"] (the store keeps the series as JSON).
 ConvergenceLog series_from_json(const nlohmann::ordered_json& series);
 
+// The result formats of a stored request (none when it has no valid list).
+std::vector<std::string> stored_formats(const nlohmann::ordered_json& request);
+
 // "/api/jobs/<id>"
 std::string job_url(int64_t id);
 

@@ -1,6 +1,8 @@
 #include "jobs/job_queue.h"
 
 #include <algorithm>
+#include <charconv>
+#include <string>
 
 namespace geodesic::jobs {
 namespace {
@@ -10,10 +12,24 @@ std::filesystem::path prepared(const std::filesystem::path& data_dir) {
   return data_dir / "jobs.sqlite3";
 }
 
+// The largest id among the job directories (0 when none).
+int64_t largest_job_dir(const std::filesystem::path& jobs_dir) {
+  int64_t largest = 0;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(jobs_dir, ec)) {
+    const std::string name = entry.path().filename().string();
+    int64_t id = 0;
+    const auto [end, error] = std::from_chars(name.data(), name.data() + name.size(), id);
+    if (error == std::errc() && end == name.data() + name.size()) largest = std::max(largest, id);
+  }
+  return largest;
+}
+
 }  // namespace
 
 JobQueue::JobQueue(RenderService& service, JobOptions options)
     : service_(service), options_(std::move(options)), store_(prepared(options_.data_dir)) {
+  store_.reserve_ids_above(largest_job_dir(options_.data_dir / "jobs"));
   // Jobs that were running resume first (from their checkpoints), then the queue in order.
   std::vector<JobRecord> unfinished = store_.list(/*unfinished_only=*/true);
   std::stable_partition(unfinished.begin(), unfinished.end(),
@@ -38,8 +54,12 @@ std::filesystem::path JobQueue::job_dir(int64_t id) const {
 
 void JobQueue::schedule() {
   std::unique_lock lock(mutex_);
+  bool retained = false;
   while (!stopping_) {
+    const std::size_t before = running_.size();
     std::erase_if(running_, [](const auto& entry) { return entry.second->finished(); });
+    if (!retained || running_.size() != before) retain();
+    retained = true;
     while (int(running_.size()) < options_.max_jobs && !queued_.empty()) {
       const int64_t id = queued_.front();
       queued_.pop_front();
@@ -72,8 +92,8 @@ std::optional<JobRecord> JobQueue::get(int64_t id) const {
   return store_.get(id);
 }
 
-std::vector<JobRecord> JobQueue::list() const {
-  std::vector<JobRecord> jobs = store_.list();
+std::vector<JobRecord> JobQueue::list(int64_t after, int limit) const {
+  std::vector<JobRecord> jobs = store_.page(after, limit);
   std::lock_guard lock(mutex_);
   for (JobRecord& job : jobs)
     if (auto it = running_.find(job.id); it != running_.end()) job = it->second->status();
@@ -98,6 +118,37 @@ std::optional<JobRecord> JobQueue::cancel(int64_t id) {
   store_.update(*job);
   std::filesystem::remove_all(job_dir(id));
   return job;
+}
+
+bool JobQueue::remove(int64_t id) {
+  std::lock_guard lock(mutex_);
+  if (auto it = running_.find(id); it != running_.end()) {
+    const JobState state = it->second->status().state;
+    if (!finished(state))
+      throw AlreadyFinished("state: job " + std::to_string(id) + " is " + state_name(state) +
+                            "; cancel it first (DELETE without remove)");
+    running_.erase(it);  // a cancelled runner: joined, it stops at its next turn
+  }
+  std::optional<JobRecord> job = store_.get(id);
+  if (!job) return false;
+  if (!finished(job->state))
+    throw AlreadyFinished("state: job " + std::to_string(id) + " is " + state_name(job->state) +
+                          "; cancel it first (DELETE without remove)");
+  store_.remove(id);
+  std::error_code ignored;
+  std::filesystem::remove_all(job_dir(id), ignored);
+  return true;
+}
+
+void JobQueue::retain() {
+  if (options_.keep_jobs <= 0) return;
+  const std::vector<int64_t> ids = store_.finished_ids();  // newest first
+  for (std::size_t i = std::size_t(options_.keep_jobs); i < ids.size(); ++i) {
+    if (running_.contains(ids[i])) continue;  // its runner still saves the end
+    store_.remove(ids[i]);
+    std::error_code ignored;
+    std::filesystem::remove_all(job_dir(ids[i]), ignored);
+  }
 }
 
 std::filesystem::path JobQueue::result_file(int64_t id, const std::string& format) const {

@@ -25,13 +25,14 @@ struct JobOptions {
   int max_jobs = 1;           // rendering at once
   int max_queued = 100;       // waiting; more is QueueFull (429)
   double checkpoint_seconds = 10;
+  int keep_jobs = 0;          // > 0: finished jobs beyond the newest this many are removed
 };
 
 class QueueFull : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Cancelling a job that has already ended (409).
+// Cancelling a job that has already ended, or removing one that has not (409).
 class AlreadyFinished : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
@@ -48,7 +49,11 @@ class JobQueue {
   // Validates (RequestError), checks the queue (QueueFull) and stores a new job.
   JobRecord submit(const nlohmann::ordered_json& body);
   std::optional<JobRecord> get(int64_t id) const;  // live progress while it runs
-  std::vector<JobRecord> list() const;
+  // In id order: at most `limit` jobs with ids above `after` (limit 0: all of them).
+  std::vector<JobRecord> list(int64_t after = 0, int limit = 0) const;
+  // Removes a finished job and its files; false when unknown; throws AlreadyFinished (sic: the
+  // 409) while it is queued or running.
+  bool remove(int64_t id);
   // The job as it ended (cancelled); nullopt when unknown; throws AlreadyFinished.
   std::optional<JobRecord> cancel(int64_t id);
   std::filesystem::path result_file(int64_t id, const std::string& format) const;
@@ -56,6 +61,7 @@ class JobQueue {
  private:
   void schedule();  // the scheduler thread: reaps ended runners, starts queued jobs
   std::filesystem::path job_dir(int64_t id) const;
+  void retain();  // --keep-jobs: removes the oldest finished jobs beyond the count
 
   RenderService& service_;
   const JobOptions options_;

@@ -14,6 +14,7 @@ using net::Response;
 using Json = nlohmann::ordered_json;
 
 constexpr std::string_view kPrefix = "/api/jobs";
+constexpr int64_t kMaxPage = 1000;
 
 struct Download {
   const char* name;  // after "/api/jobs/<id>/"
@@ -53,7 +54,47 @@ Response submit(const Request& request, JobQueue& queue) {
     return net::json_error(request, status::bad_request, e.what());
   } catch (const QueueFull& e) {
     return net::json_error(request, status::too_many_requests, e.what());
+  } catch (const std::runtime_error& e) {  // the store cannot write (a full disk)
+    Response response = net::json_error(request, status::service_unavailable,
+                                        std::string("store: the job was not stored: ") + e.what());
+    response.set(net::http::field::retry_after, "60");
+    return response;
   }
+}
+
+// ?name=<digits> in the target; nullopt when absent; throws RequestError when malformed.
+std::optional<int64_t> query_integer(const Request& request, std::string_view name, int64_t max) {
+  const std::string_view target(request.target().data(), request.target().size());
+  const std::string_view value = net::query_parameter(target, name);
+  if (value.empty() && target.find(std::string(name) + "=") == std::string_view::npos) return std::nullopt;
+  int64_t number = -1;
+  const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), number);
+  if (ec != std::errc() || end != value.data() + value.size() || number < 0 || number > max)
+    throw RequestError(std::string(name) + ": must be an integer in [0, " + std::to_string(max) + "]");
+  return number;
+}
+
+// GET /api/jobs[?limit=N][&after=ID]: a page in id order, and the `next` page's link when the
+// page is full.
+Response list_jobs(const Request& request, JobQueue& queue) {
+  std::optional<int64_t> limit, after;
+  try {
+    limit = query_integer(request, "limit", kMaxPage);
+    after = query_integer(request, "after", INT64_MAX);
+  } catch (const RequestError& e) {
+    return net::json_error(request, status::bad_request, e.what());
+  }
+  if (limit && *limit == 0) return net::json_error(request, status::bad_request,
+                                                   "limit: must be an integer in [1, " +
+                                                       std::to_string(kMaxPage) + "]");
+  Json jobs = Json::array();
+  const std::vector<JobRecord> page = queue.list(after.value_or(0), int(limit.value_or(0)));
+  for (const JobRecord& job : page) jobs.push_back(job.status_json(/*detail=*/false));
+  Json body = {{"jobs", jobs}};
+  if (limit && !page.empty() && int64_t(page.size()) == *limit)
+    body["next"] = std::string(kPrefix) + "?limit=" + std::to_string(*limit) +
+                   "&after=" + std::to_string(page.back().id);
+  return net::json_response(request, body);
 }
 
 Response report(const Request& request, const JobRecord& job, bool csv) {
@@ -71,7 +112,7 @@ Response download(const Request& request, JobQueue& queue, const JobRecord& job,
   const std::string_view name = what.name;
   if (name.starts_with("report.")) return report(request, job, name.ends_with(".csv"));
   const std::string format(name.substr(name.find('.') + 1));
-  const auto& formats = job.request["formats"];
+  const std::vector<std::string> formats = stored_formats(job.request);
   if (std::find(formats.begin(), formats.end(), format) == formats.end())
     return net::json_error(request, status::not_found, "format: job " + std::to_string(job.id) +
                                                            " was not asked for " + format);
@@ -95,6 +136,15 @@ Response one_job(const Request& request, JobQueue& queue, std::string_view rest)
   if (!id) return net::json_error(request, status::not_found, "id: not a job id");
   const auto method = request.method();
   if (slash == std::string_view::npos) {
+    const std::string_view target(request.target().data(), request.target().size());
+    if (method == net::http::verb::delete_ && net::query_parameter(target, "remove") == "true") {
+      try {
+        if (!queue.remove(*id)) return not_found(request, *id);
+        return net::json_response(request, {{"id", *id}, {"removed", true}});
+      } catch (const AlreadyFinished& e) {
+        return net::json_error(request, status::conflict, e.what());
+      }
+    }
     if (method == net::http::verb::delete_) {
       try {
         const std::optional<JobRecord> job = queue.cancel(*id);
@@ -131,9 +181,7 @@ std::optional<Response> answer_jobs(const Request& request, std::string_view pat
     if (request.method() == net::http::verb::post) return submit(request, queue);
     if (request.method() != net::http::verb::get && request.method() != net::http::verb::head)
       return net::method_not_allowed(request, "GET, HEAD, POST");
-    Json jobs = Json::array();
-    for (const JobRecord& job : queue.list()) jobs.push_back(job.status_json(/*detail=*/false));
-    return net::json_response(request, {{"jobs", jobs}});
+    return list_jobs(request, queue);
   }
   if (rest.front() != '/') return std::nullopt;  // e.g. /api/jobsx: not ours
   return one_job(request, queue, rest.substr(1));

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include "jobs/checkpoint.h"
 #include "jobs/durable_file.h"
@@ -26,6 +27,15 @@ constexpr int kFirstBand = 8;
 // Device losses a job starts over after (from its checkpoint, on the service's new device)
 // before it fails.
 constexpr int kDeviceLossRetries = 3;
+
+// Messages go to clients: where the data directory lies on the server is not theirs to know
+// ("<data>/jobs/2/result.exr: File too large" -> "jobs/2/result.exr: File too large").
+std::string without_data_dir(std::string message, const std::filesystem::path& job_dir) {
+  const std::string data_dir = job_dir.parent_path().parent_path().string() + "/";
+  for (std::size_t at = message.find(data_dir); at != std::string::npos; at = message.find(data_dir))
+    message.erase(at, data_dir.size());
+  return message;
+}
 
 double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
@@ -89,7 +99,7 @@ void JobRunner::save(JobState state, const std::string& message) {
     std::lock_guard lock(mutex_);
     if (job_.state == JobState::Cancelled) state = JobState::Cancelled;  // a cancel wins
     job_.state = state;
-    job_.message = message;
+    job_.message = without_data_dir(message, dir_);
     copy = job_;
   }
   std::error_code ignored;
@@ -104,7 +114,22 @@ void JobRunner::render() {
   const int width = job.request.width, height = job.request.height;
   std::filesystem::create_directories(dir_);
   const std::filesystem::path checkpoint_file = dir_ / "checkpoint.bin";
-  const std::optional<Checkpoint> checkpoint = read_checkpoint(checkpoint_file);
+  const uint64_t fingerprint = checkpoint_fingerprint(job_.request.dump(), width, height,
+                                                      job.scene.render.seed);
+  std::optional<Checkpoint> checkpoint;
+  try {
+    checkpoint = read_checkpoint(checkpoint_file, fingerprint);
+    if (checkpoint && (checkpoint->width != width || checkpoint->height != height))
+      throw CheckpointError("checkpoint: its size differs from the job's");
+    if (checkpoint && stop.spp && checkpoint->samples > *stop.spp)
+      throw CheckpointError("checkpoint: more samples than the job asks for");
+  } catch (const CheckpointError& e) {
+    // Damaged, or another job's: the job starts over from zero with its intact request.
+    std::fprintf(stderr, "geodesic: job %lld: %s; starting from zero\n",
+                 static_cast<long long>(job_.id), e.what());
+    std::error_code ignored;
+    std::filesystem::remove(checkpoint_file, ignored);
+  }
 
   std::unique_ptr<Renderer> renderer;
   // Vulkan objects are made and freed only while this job holds the device, on every way out.
@@ -142,7 +167,7 @@ void JobRunner::render() {
   auto last_checkpoint = started;
   uint32_t checkpointed = checkpoint ? checkpoint->samples : 0;
   auto save_checkpoint = [&](const ErrorSample& pass_end) {
-    write_checkpoint(checkpoint_file, pass_end.spp, pass_end.seconds, width, height,
+    write_checkpoint(checkpoint_file, fingerprint, pass_end.spp, pass_end.seconds, width, height,
                      renderer->accumulation());
     last_checkpoint = Clock::now();
     checkpointed = pass_end.spp;

@@ -1,5 +1,8 @@
 #include "jobs/job_store.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <ctime>
 #include <stdexcept>
 #include <string>
@@ -91,19 +94,50 @@ std::string now_iso8601() {
   return text;
 }
 
+// What the rest of the daemon reads of a stored request without checking again.
+void check_stored_request(const Json& request) {
+  if (!request.is_object()) throw std::invalid_argument("request: not an object");
+  const auto scene = request.find("scene");
+  if (scene == request.end() || !(scene->is_string() || scene->is_object()))
+    throw std::invalid_argument("request.scene: missing or neither a name nor a document");
+  for (const char* side : {"width", "height"}) {
+    const auto it = request.find(side);
+    if (it == request.end() || !it->is_number_integer() || it->get<int64_t>() < 1)
+      throw std::invalid_argument(std::string("request.") + side + ": missing or not a positive integer");
+  }
+  const auto formats = request.find("formats");
+  if (formats == request.end() || !formats->is_array())
+    throw std::invalid_argument("request.formats: missing or not an array");
+  for (const Json& format : *formats)
+    if (!format.is_string() || (format != "exr" && format != "png" && format != "jpg"))
+      throw std::invalid_argument("request.formats: holds an unknown format");
+}
+
+double finite_or(double value, double fallback) { return std::isfinite(value) ? value : fallback; }
+
+// A row checked field by field: a damaged one reads as a failed job naming the damage (the
+// request it cannot trust replaced by an empty one), and the rest of the store stays readable.
 JobRecord read_row(const Statement& row) {
   JobRecord job;
   job.id = row.integer(0);
-  job.state = parse_state(row.text(1));
-  job.request = Json::parse(row.text(2));
   job.created = row.text(3);
-  job.samples = uint32_t(row.integer(4));
-  job.elapsed = row.real(5);
-  job.error = row.real(6);
-  job.progress = row.real(7);
-  job.checkpoint_samples = uint32_t(row.integer(8));
+  job.samples = uint32_t(std::clamp<int64_t>(row.integer(4), 0, UINT32_MAX));
+  job.elapsed = std::max(0.0, finite_or(row.real(5), 0));
+  job.error = finite_or(row.real(6), -1);
+  job.progress = std::clamp(finite_or(row.real(7), 0), 0.0, 1.0);
+  job.checkpoint_samples = uint32_t(std::clamp<int64_t>(row.integer(8), 0, UINT32_MAX));
   job.message = row.text(9);
-  job.series = series_from_json(Json::parse(row.text(10)));
+  try {
+    job.state = parse_state(row.text(1));
+    job.request = Json::parse(row.text(2));
+    check_stored_request(job.request);
+    job.series = series_from_json(Json::parse(row.text(10)));
+  } catch (const std::exception& e) {
+    job.state = JobState::Failed;
+    job.request = Json::object();
+    job.series = {};
+    job.message = std::string("stored record damaged: ") + e.what();
+  }
   return job;
 }
 
@@ -139,6 +173,19 @@ int64_t JobStore::insert(const Json& request) {
   return sqlite3_last_insert_rowid(db_);
 }
 
+void JobStore::reserve_ids_above(int64_t id) {
+  std::lock_guard lock(mutex_);
+  Statement current(db_, "SELECT coalesce(max(seq), 0) FROM sqlite_sequence WHERE name = 'jobs'");
+  const int64_t seq = current.step() ? current.integer(0) : 0;
+  Statement rows(db_, "SELECT coalesce(max(id), 0) FROM jobs");
+  const int64_t last = rows.step() ? rows.integer(0) : 0;
+  if (id <= std::max(seq, last)) return;
+  Statement clear(db_, "DELETE FROM sqlite_sequence WHERE name = 'jobs'");
+  clear.step();
+  Statement set(db_, "INSERT INTO sqlite_sequence (name, seq) VALUES ('jobs', ?)");
+  set.bind(1, id).step();
+}
+
 std::optional<JobRecord> JobStore::get(int64_t id) const {
   std::lock_guard lock(mutex_);
   Statement select(db_, std::string("SELECT ") + kColumns + " FROM jobs WHERE id = ?");
@@ -155,6 +202,30 @@ std::vector<JobRecord> JobStore::list(bool unfinished_only) const {
   std::vector<JobRecord> jobs;
   while (select.step()) jobs.push_back(read_row(select));
   return jobs;
+}
+
+std::vector<JobRecord> JobStore::page(int64_t after, int limit) const {
+  std::lock_guard lock(mutex_);
+  Statement select(db_, std::string("SELECT ") + kColumns +
+                            " FROM jobs WHERE id > ? ORDER BY id LIMIT ?");
+  select.bind(1, after).bind(2, int64_t(limit > 0 ? limit : -1));
+  std::vector<JobRecord> jobs;
+  while (select.step()) jobs.push_back(read_row(select));
+  return jobs;
+}
+
+std::vector<int64_t> JobStore::finished_ids() const {
+  std::lock_guard lock(mutex_);
+  Statement select(db_, "SELECT id FROM jobs WHERE state NOT IN ('queued', 'running') ORDER BY id DESC");
+  std::vector<int64_t> ids;
+  while (select.step()) ids.push_back(select.integer(0));
+  return ids;
+}
+
+void JobStore::remove(int64_t id) {
+  std::lock_guard lock(mutex_);
+  Statement remove(db_, "DELETE FROM jobs WHERE id = ?");
+  remove.bind(1, id).step();
 }
 
 void JobStore::update(const JobRecord& job) {

@@ -28,6 +28,15 @@ class JobStore {
   std::optional<JobRecord> get(int64_t id) const;
   // Every job in id order; `unfinished_only`: queued and running ones (what a start resumes).
   std::vector<JobRecord> list(bool unfinished_only = false) const;
+  // At most `limit` jobs (0: all) with ids above `after`, in id order.
+  std::vector<JobRecord> page(int64_t after, int limit) const;
+  // Ids of finished jobs, newest first.
+  std::vector<int64_t> finished_ids() const;
+  void remove(int64_t id);
+
+  // New ids start above `id` (a fresh or restored store beside job directories of a previous
+  // one: ids are never reused, so no job meets another's files).
+  void reserve_ids_above(int64_t id);
 
   // Saves state, progress, series, checkpoint and message of `job` (request and created stay).
   void update(const JobRecord& job);

@@ -1,5 +1,8 @@
 #include "net/auth.h"
 
+#include <algorithm>
+#include <cctype>
+
 #include <boost/asio/ip/address.hpp>
 
 namespace geodesic::net {
@@ -13,22 +16,6 @@ bool same_secret(std::string_view given, std::string_view token) {
   return difference == 0;
 }
 
-// The value of `name` in the target's query string, undecoded (tokens are URL-safe).
-std::string_view query_parameter(std::string_view target, std::string_view name) {
-  const size_t query = target.find('?');
-  if (query == std::string_view::npos) return {};
-  std::string_view rest = target.substr(query + 1);
-  while (!rest.empty()) {
-    const size_t end = rest.find('&');
-    const std::string_view pair = rest.substr(0, end);
-    if (pair.size() > name.size() && pair.starts_with(name) && pair[name.size()] == '=')
-      return pair.substr(name.size() + 1);
-    if (end == std::string_view::npos) break;
-    rest = rest.substr(end + 1);
-  }
-  return {};
-}
-
 }  // namespace
 
 bool needs_token(std::string_view path) {
@@ -39,11 +26,25 @@ bool authorized(const Request& request, const std::string& token) {
   if (token.empty()) return true;
   const std::string_view header(request[http::field::authorization].data(),
                                 request[http::field::authorization].size());
-  constexpr std::string_view kBearer = "Bearer ";
-  if (header.starts_with(kBearer)) return same_secret(header.substr(kBearer.size()), token);
+  // The scheme is case-insensitive (RFC 7235 section 2.1): "bearer", "BEARER" and "Bearer".
+  constexpr std::string_view kBearer = "bearer ";
+  if (header.size() >= kBearer.size() &&
+      std::equal(kBearer.begin(), kBearer.end(), header.begin(), [](char a, char b) {
+        return a == std::tolower(static_cast<unsigned char>(b));
+      }))
+    return same_secret(header.substr(kBearer.size()), token);
   const std::string_view target(request.target().data(), request.target().size());
   const std::string_view given = query_parameter(target, "token");
   return !given.empty() && same_secret(given, token);
+}
+
+std::string usable_token(const std::string& token) {
+  if (token.empty()) return "";
+  for (char c : token)
+    if (std::isspace(static_cast<unsigned char>(c)) || !std::isprint(static_cast<unsigned char>(c)))
+      return "must be printable characters without spaces";
+  if (token.size() < 8) return "must be at least 8 characters";
+  return "";
 }
 
 bool is_loopback(const std::string& host) {

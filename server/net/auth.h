@@ -17,6 +17,10 @@ bool needs_token(std::string_view path);
 // `token` query parameter (browsers cannot set headers on a WebSocket). Constant-time compare.
 bool authorized(const Request& request, const std::string& token);
 
+// "" when `token` may be used (or is empty: no auth), else why not: a token of blanks or control
+// characters, or shorter than 8 characters, would be guessed or mistyped into the open.
+std::string usable_token(const std::string& token);
+
 // True for 127.0.0.0/8, ::1 and "localhost": the addresses that may serve without a token.
 bool is_loopback(const std::string& host);
 

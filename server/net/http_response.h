@@ -19,6 +19,9 @@ Response make_response(const Request& request, http::status status, std::string_
 Response json_response(const Request& request, const nlohmann::ordered_json& body,
                        http::status status = http::status::ok);
 // {"error": "<field>: <reason>"}: API errors name the field at fault ("" for none).
+// The value of `name` in the target's query string, undecoded; empty when absent.
+std::string_view query_parameter(std::string_view target, std::string_view name);
+
 Response json_error(const Request& request, http::status status, std::string_view message);
 // A method the path does not answer: 405 with the Allow header.
 Response method_not_allowed(const Request& request, std::string_view allow);

@@ -11,6 +11,7 @@
 #include "net/http_response.h"
 #include "net/metrics.h"
 #include "net/openapi.h"
+#include "net/preparation_pool.h"
 #include "net/static_files.h"
 #include "net/websocket_session.h"
 
@@ -31,6 +32,15 @@ Response error_response(const Request& request, http::status status, std::string
 std::string_view path_of(const Request& request) {
   const std::string_view target(request.target().data(), request.target().size());
   return target.substr(0, target.find('?'));
+}
+
+// Whole answers, HEAD bodies dropped and exceptions answered 500 JSON.
+Response respond(const Request& request, ServerContext& context);
+
+// Requests whose answer may enumerate a group or load meshes: POST /api/jobs.
+bool needs_preparation(const Request& request) {
+  const std::string_view path = path_of(request);
+  return request.method() == http::verb::post && (path == "/api/jobs" || path == "/api/jobs/");
 }
 
 Response answer(const Request& request, ServerContext& context) {
@@ -61,6 +71,18 @@ Response answer(const Request& request, ServerContext& context) {
   auto file = load_static_file(context.options.web_dir, path);
   if (!file) return error_response(request, http::status::not_found, "not found");
   return make_response(request, http::status::ok, file->mime_type, std::move(file->body));
+}
+
+Response respond(const Request& request, ServerContext& context) {
+  Response response;
+  try {
+    response = answer(request, context);
+  } catch (const std::exception& e) {
+    response = json_error(request, http::status::internal_server_error,
+                          std::string("server: ") + e.what());
+  }
+  if (request.method() == http::verb::head) response.body().clear();  // headers keep the length
+  return response;
 }
 
 }  // namespace
@@ -109,14 +131,26 @@ void HttpSession::on_read(beast::error_code ec, std::size_t) {
         ->start(std::move(request));
     return;
   }
-  Response response;
-  try {
-    response = answer(request, context_);
-  } catch (const std::exception& e) {
-    response = error_response(request, http::status::internal_server_error, e.what());
-  }
-  if (request.method() == http::verb::head) response.body().clear();  // headers keep the length
-  send(std::move(response));
+  // Only authorized submissions take a place on the pool (a refusal is answered here at once).
+  if (context_.preparation && needs_preparation(request) &&
+      authorized(request, context_.options.token))
+    return prepare(std::move(request));
+  send(respond(request, context_));
+}
+
+// Answers on the preparation pool, then writes on this connection's strand; a full pool answers
+// 503 at once.
+void HttpSession::prepare(http::request<http::string_body> request) {
+  auto shared = std::make_shared<Request>(std::move(request));
+  const bool queued = context_.preparation->submit([self = shared_from_this(), shared] {
+    auto response = std::make_shared<Response>(respond(*shared, self->context_));
+    asio::post(self->stream_.get_executor(), [self, response] { self->send(std::move(*response)); });
+  });
+  if (queued) return;
+  Response busy = json_error(*shared, http::status::service_unavailable,
+                             "body: the server is busy preparing other scenes; try again shortly");
+  busy.set(http::field::retry_after, "1");
+  send(std::move(busy));
 }
 
 void HttpSession::send(http::response<http::string_body> response) {

@@ -25,6 +25,7 @@ class Listener : public std::enable_shared_from_this<Listener> {
   asio::io_context& io_;
   ServerContext& context_;
   tcp::acceptor acceptor_;
+  asio::steady_timer backoff_;  // between failed accepts
   uint16_t port_ = 0;
 };
 

@@ -23,6 +23,10 @@ void reject_unknown_fields(const Json& message, std::initializer_list<std::strin
   }
 }
 
+// The largest step (geodesic length) and turn (degrees) one `move` may ask for.
+constexpr double kMaxStep = 10;
+constexpr double kMaxTurnDegrees = 360;
+
 double finite_number(const Json& message, const std::string& key) {
   const Json& v = message.at(key);
   if (!v.is_number() || !std::isfinite(v.get<double>()))
@@ -69,8 +73,18 @@ CameraMotion parse_move(const Json& message) {
   const std::pair<const char*, double*> fields[] = {
       {"forward", &m.forward}, {"right", &m.right}, {"up", &m.up},
       {"yaw", &m.yaw},         {"pitch", &m.pitch}, {"roll", &m.roll}};
-  for (const auto& [key, target] : fields)
-    if (message.contains(key)) *target = finite_number(message, key);
+  for (const auto& [key, target] : fields) {
+    if (!message.contains(key)) continue;
+    *target = finite_number(message, key);
+    // One move is a step within a few domains and a turn within a full circle: beyond that the
+    // pose's hyperbolic functions overflow (a 1e308 step made it NaN for good).
+    const bool turn = target == &m.yaw || target == &m.pitch || target == &m.roll;
+    const double limit = turn ? kMaxTurnDegrees : kMaxStep;
+    if (std::abs(*target) > limit)
+      throw ProtocolError(key, "must be within [-" + std::to_string(int(limit)) + ", " +
+                                   std::to_string(int(limit)) + "] " +
+                                   (turn ? "degrees" : "(a geodesic length)"));
+  }
   return m;
 }
 

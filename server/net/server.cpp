@@ -9,12 +9,16 @@ namespace geodesic::net {
 namespace {
 
 // Time the close handshakes get on shutdown before the I/O threads are stopped.
-constexpr auto kShutdownGrace = std::chrono::seconds(2);
+// SIGTERM must end the daemon within 2 s whatever it is doing (docs/reliability.md).
+constexpr auto kShutdownGrace = std::chrono::milliseconds(1000);
 
 }  // namespace
 
 Server::Server(RenderService& render, ServerOptions options, jobs::JobQueue* jobs)
-    : context_{render, std::move(options), {}, {}, jobs}, io_(context_.options.threads) {
+    : context_{render, std::move(options), {}, {}, jobs},
+      preparation_({context_.options.preparation_threads, 16, context_.options.preparation_seconds}),
+      io_(context_.options.threads) {
+  context_.preparation = &preparation_;
   const tcp::endpoint endpoint(asio::ip::make_address(context_.options.host),
                                context_.options.port);
   listener_ = std::make_shared<Listener>(io_, context_, endpoint);
@@ -40,6 +44,8 @@ void Server::stop() {
     stopped_ = true;
   }
   listener_->stop();
+  // Running preparations stop at their next budget check; their connections are cut below.
+  preparation_.stop();
   for (const auto& session : context_.sessions.live())
     session->close(static_cast<uint16_t>(websocket::close_code::going_away),
                    "server shutting down");

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "net/beast.h"
+#include "net/preparation_pool.h"
 #include "net/server_context.h"
 
 namespace geodesic::net {
@@ -35,6 +36,7 @@ class Server {
 
  private:
   ServerContext context_;  // declared first: sessions destroyed with io_ still use it
+  PreparationPool preparation_;  // stopped first by stop(): its tasks post to io_
   asio::io_context io_;
   std::shared_ptr<Listener> listener_;
   std::vector<std::thread> threads_;

@@ -30,12 +30,19 @@ struct ServerOptions {
   std::filesystem::path web_dir;
   // No client message for this long closes a WebSocket with 4000.
   std::chrono::milliseconds idle_timeout = std::chrono::minutes(10);
+  // When every session slot is taken, a new connection takes the slot of a session that has
+  // sent no message for this long (closed with 4000).
+  std::chrono::milliseconds idle_eviction = std::chrono::seconds(60);
   // A whole HTTP request must arrive within this (slow senders cannot hold a connection).
   std::chrono::milliseconds http_timeout = std::chrono::seconds(30);
   // SO_SNDBUF of WebSocket connections in bytes; 0 leaves the kernel's autotuning (up to
   // net.ipv4.tcp_wmem's maximum, 4 MiB by default), which hides a slow reader for a while.
   int socket_send_buffer = 0;
   int threads = 2;
+  // Scene preparation (generator enumeration, documents, meshes) off the I/O threads: worker
+  // threads, and the time one preparation may take before it is refused with a named error.
+  int preparation_threads = 2;
+  double preparation_seconds = 10;
   // Bearer token the API, /metrics and /ws need (net/auth.h); empty: no auth.
   std::string token;
 };
@@ -46,6 +53,7 @@ struct NetCounters {
 };
 
 class WebSocketSession;
+class PreparationPool;
 
 class SessionRegistry {
  public:
@@ -76,6 +84,7 @@ struct ServerContext {
   NetCounters counters;
   SessionRegistry sessions;
   jobs::JobQueue* jobs = nullptr;  // null: no jobs API (404)
+  PreparationPool* preparation = nullptr;  // null: preparation runs on the I/O threads
 };
 
 }  // namespace geodesic::net

@@ -5,6 +5,7 @@
 #include <utility>
 #include <variant>
 
+#include "net/preparation_pool.h"
 #include "net/protocol.h"
 #include "scene/default_scene.h"
 #include "scene/scene.h"
@@ -20,6 +21,9 @@ constexpr std::size_t kMaxQueuedTexts = 16;
 // How long a close may wait for a stuck write and the close handshake before the socket goes.
 constexpr auto kCloseDeadline = std::chrono::seconds(5);
 constexpr uint16_t kIdleTimeoutCode = 4000;
+// A connection to a full server waits this long, this many times, for an idle session's slot.
+constexpr int kEvictionRetries = 20;
+constexpr auto kEvictionRetryDelay = std::chrono::milliseconds(50);
 
 websocket::close_reason make_reason(uint16_t code, std::string reason) {
   constexpr std::size_t kMaxReason = 123;  // a close frame's payload is 125 bytes
@@ -87,15 +91,30 @@ void WebSocketSession::on_accept(beast::error_code ec) {
   relay_ = std::make_shared<FrameRelay>();
   relay_->session = weak_from_this();
   relay_->strand = ws_.get_executor();
+  open_render_session(kEvictionRetries);
+}
+
+// A full server first asks its longest-silent session (no message for idle_eviction) to give up
+// its slot, then tries again shortly; without one the client gets 1013.
+void WebSocketSession::open_render_session(int retries) {
   RenderService& render = context_.render;
   try {
     id_ = render.open_session(
         [relay = relay_](std::shared_ptr<const EncodedFrame> frame) { relay->deliver(frame); },
         [relay = relay_](const std::string& reason) { relay->fail(reason); });
   } catch (const std::exception& e) {
+    if (retries > 0 && (retries < kEvictionRetries || evict_idle_session())) {
+      timer_.expires_after(kEvictionRetryDelay);
+      timer_.async_wait([self = shared_from_this(), retries](beast::error_code ec) {
+        if (!ec) self->open_render_session(retries - 1);
+      });
+      return;
+    }
     close(static_cast<uint16_t>(websocket::close_code::try_again_later), e.what());
     return;
   }
+  last_message_ = Clock::now();
+  last_message_ticks_ = last_message_.time_since_epoch().count();
   context_.sessions.add(shared_from_this());
   try {
     send_text(hello_message(*id_, render.bundled_scenes(), render.limits(), kMaxMessageBytes,
@@ -106,7 +125,6 @@ void WebSocketSession::on_accept(beast::error_code ec) {
     close(static_cast<uint16_t>(websocket::close_code::internal_error), e.what());
     return;
   }
-  last_message_ = Clock::now();
   arm_timer(last_message_ + context_.options.idle_timeout);
   read();
 }
@@ -120,6 +138,7 @@ void WebSocketSession::on_read(beast::error_code ec, std::size_t) {
   // Closed by the client, too big (Beast has answered 1009), or the connection is gone.
   if (ec) return finish();
   last_message_ = Clock::now();
+  last_message_ticks_ = last_message_.time_since_epoch().count();
   if (!close_reason_) {
     if (ws_.got_text())
       handle_message(beast::buffers_to_string(read_buffer_.data()));
@@ -127,13 +146,23 @@ void WebSocketSession::on_read(beast::error_code ec, std::size_t) {
       send_text(error_message(ProtocolError("", "binary messages are not accepted")));
   }
   read_buffer_.consume(read_buffer_.size());
+  if (preparing_) return;  // on_prepared reads on
   if (texts_.size() >= kMaxQueuedTexts)
     read_paused_ = true;
   else
     read();
 }
 
-// Runs the request on this strand: loading a scene blocks one I/O thread for its duration.
+// A scene for `open`, or the error to send.
+struct WebSocketSession::Prepared {
+  OpenRequest open;
+  std::optional<Scene> scene;
+  std::string name;
+  std::string error;    // an `error` message for the client
+  std::string failure;  // an unexpected exception: the session closes with 1011
+};
+
+// Runs the request on this strand; an `open` is prepared on the preparation pool.
 void WebSocketSession::handle_message(const std::string& text) {
   if (!id_) return;
   RenderService& render = context_.render;
@@ -144,6 +173,7 @@ void WebSocketSession::handle_message(const std::string& text) {
     return send_text(error_message(e));
   }
   const OpenRequest* open = std::get_if<OpenRequest>(&message);
+  if (open && context_.preparation) return prepare_open(*open);
   try {
     if (open) {
       send_text(scene_message(
@@ -164,6 +194,65 @@ void WebSocketSession::handle_message(const std::string& text) {
   } catch (const std::exception& e) {
     close(static_cast<uint16_t>(websocket::close_code::internal_error), e.what());
   }
+}
+
+// The scene (bundled scene, document, generator text) is parsed and its group enumerated on the
+// preparation pool under its time budget, then installed here; no further message is read
+// meanwhile, so messages keep their order while frames go on.
+void WebSocketSession::prepare_open(const OpenRequest& open) {
+  preparing_ = true;
+  const bool queued = context_.preparation->submit([self = shared_from_this(), open] {
+    Prepared prepared{open};
+    try {
+      const RenderService& render = self->context_.render;
+      if (open.scene) {
+        prepared.scene = render.load_bundled_scene(*open.scene);
+        prepared.name = *open.scene;
+      } else {
+        prepared.scene = render.parse_scene_document(
+            open.generators ? generator_text_scene(*open.generators, "generators") : *open.document);
+        prepared.name = prepared.scene->name.empty() ? "document" : prepared.scene->name;
+      }
+    } catch (const SceneError& e) {
+      prepared.error = error_message(service_error(e, &open));
+    } catch (const std::invalid_argument& e) {
+      prepared.error = error_message(service_error(e, &open));
+    } catch (const std::exception& e) {
+      prepared.failure = e.what();
+    }
+    auto result = std::make_shared<Prepared>(std::move(prepared));
+    asio::post(self->ws_.get_executor(), [self, result] { self->on_prepared(std::move(*result)); });
+  });
+  if (queued) return;
+  preparing_ = false;
+  send_text(error_message(service_error(
+      std::runtime_error("the server is busy preparing other scenes; try again shortly"), &open)));
+}
+
+void WebSocketSession::on_prepared(Prepared prepared) {
+  preparing_ = false;
+  if (id_ && !close_reason_) {
+    try {
+      if (!prepared.failure.empty()) throw std::runtime_error(prepared.failure);
+      if (!prepared.error.empty()) {
+        send_text(std::move(prepared.error));
+      } else {
+        send_text(scene_message(context_.render.install_scene(*id_, std::move(*prepared.scene),
+                                                              std::move(prepared.name))));
+        waiting_frame_.reset();  // rendered before the change
+      }
+    } catch (const SceneError& e) {
+      send_text(error_message(service_error(e, &prepared.open)));
+    } catch (const std::invalid_argument& e) {
+      send_text(error_message(service_error(e, &prepared.open)));
+    } catch (const std::exception& e) {
+      close(static_cast<uint16_t>(websocket::close_code::internal_error), e.what());
+    }
+  }
+  if (texts_.size() >= kMaxQueuedTexts)
+    read_paused_ = true;
+  else
+    read();
 }
 
 void WebSocketSession::on_frame(std::shared_ptr<const EncodedFrame> frame) {
@@ -273,6 +362,23 @@ void WebSocketSession::release() {
   }
   texts_.clear();
   waiting_frame_.reset();
+}
+
+bool WebSocketSession::evict_idle_session() {
+  const auto now = Clock::now().time_since_epoch().count();
+  const auto limit = std::chrono::duration_cast<Clock::duration>(context_.options.idle_eviction).count();
+  std::shared_ptr<WebSocketSession> quietest;
+  for (auto& session : context_.sessions.live()) {
+    const auto since = session->last_message_ticks_.load();
+    if (session.get() == this || session->evicted_ || since == 0 || now - since < limit) continue;
+    if (!quietest || since < quietest->last_message_ticks_.load()) quietest = std::move(session);
+  }
+  if (!quietest || quietest->evicted_.exchange(true)) return false;
+  asio::post(quietest->ws_.get_executor(), [quietest] {
+    quietest->release();  // its slot now: the waiting connection takes it
+    quietest->close(kIdleTimeoutCode, "idle: no message for a while and the server is full");
+  });
+  return true;
 }
 
 void WebSocketSession::arm_timer(Clock::time_point at) {

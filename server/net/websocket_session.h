@@ -4,6 +4,7 @@
 // the server two frames of memory at most.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <deque>
@@ -12,6 +13,7 @@
 #include <string>
 
 #include "net/beast.h"
+#include "net/protocol.h"
 #include "net/server_context.h"
 
 namespace geodesic::net {
@@ -31,12 +33,18 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
 
  private:
   struct FrameRelay;
+  struct Prepared;
   enum class Writing { nothing, text, frame_text, frame_jpeg };
 
   void on_accept(beast::error_code ec);
+  void open_render_session(int retries);
+  // Asks the session silent longest (beyond idle_eviction) to give up its slot; false if none.
+  bool evict_idle_session();
   void read();
   void on_read(beast::error_code ec, std::size_t bytes);
   void handle_message(const std::string& text);
+  void prepare_open(const OpenRequest& open);
+  void on_prepared(Prepared prepared);
   void on_frame(std::shared_ptr<const EncodedFrame> frame);
   void on_render_failed(const std::string& reason);
   void send_text(std::string text);
@@ -54,6 +62,9 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   std::shared_ptr<FrameRelay> relay_;
   std::optional<RenderService::SessionId> id_;
   std::chrono::steady_clock::time_point last_message_;
+  // last_message_ for other connections' threads (0 until the session is open).
+  std::atomic<std::chrono::steady_clock::rep> last_message_ticks_{0};
+  std::atomic<bool> evicted_{false};
 
   std::deque<std::string> texts_;  // hello, scene, error: sent before any waiting frame
   std::shared_ptr<const EncodedFrame> waiting_frame_;
@@ -61,6 +72,7 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   std::string text_in_flight_;
   Writing writing_ = Writing::nothing;
   bool read_paused_ = false;  // too many replies queued: stop reading until they drain
+  bool preparing_ = false;    // an `open` is on the preparation pool: read on once it is done
 
   std::optional<websocket::close_reason> close_reason_;  // set once closing is asked
   std::chrono::steady_clock::time_point close_deadline_;

@@ -87,6 +87,13 @@ struct RenderService::Impl {
   SessionId last_served = 0;
   bool stopping = false;
   ServiceStats stats;
+  // A copy of `stats` for stats(): /healthz and /metrics never wait for the device lock.
+  mutable std::mutex published_mutex;
+  ServiceStats published;
+  void publish() {
+    std::lock_guard hold(published_mutex);
+    published = stats;
+  }
   double recent_samples = 0;
   Clock::time_point window_start = Clock::now();
   std::thread thread;
@@ -97,6 +104,7 @@ struct RenderService::Impl {
         scene_dir(std::move(dir)),
         limits(l) {
     stats.device = ctx->description().name;
+    publish();
     thread = std::thread([this] { run(); });
   }
 
@@ -193,7 +201,8 @@ struct RenderService::Impl {
           fail(it->first, std::string("render: ") + e.what());
         }
       }
-      // Let waiting callers (moves, new scenes, stats) in between slices.
+      // Let waiting callers (moves, new scenes) in between slices.
+      publish();
       lock.unlock();
       for (int spins = 0; waiting.load() > 0 && spins < 100; ++spins)
         std::this_thread::sleep_for(std::chrono::microseconds(100));
@@ -336,6 +345,7 @@ RenderService::SessionId RenderService::open_session(FrameCallback on_frame,
   const SessionId id = impl_->next_id++;
   impl_->sessions[id] = std::move(session);
   impl_->stats.sessions = int(impl_->sessions.size());
+  impl_->publish();
   impl_->wake.notify_all();
   return id;
 }
@@ -344,6 +354,7 @@ void RenderService::close_session(SessionId id) {
   auto lock = impl_->lock();
   impl_->sessions.erase(id);  // frees its renderer and buffers
   impl_->stats.sessions = int(impl_->sessions.size());
+  impl_->publish();
 }
 
 Scene RenderService::load_bundled_scene(const std::string& name) const {
@@ -358,14 +369,16 @@ Scene RenderService::parse_scene_document(const nlohmann::ordered_json& document
 }
 
 SceneInfo RenderService::load_scene(SessionId id, const std::string& name) {
-  Scene scene = load_bundled_scene(name);
-  auto lock = impl_->lock();
-  return impl_->install(impl_->find(id), std::move(scene), name);
+  return install_scene(id, load_bundled_scene(name), name);
 }
 
 SceneInfo RenderService::load_scene_document(SessionId id, const nlohmann::ordered_json& doc) {
   Scene scene = parse_scene_document(doc);
   std::string name = scene.name.empty() ? "document" : scene.name;
+  return install_scene(id, std::move(scene), std::move(name));
+}
+
+SceneInfo RenderService::install_scene(SessionId id, Scene scene, std::string name) {
   auto lock = impl_->lock();
   return impl_->install(impl_->find(id), std::move(scene), std::move(name));
 }
@@ -373,7 +386,11 @@ SceneInfo RenderService::load_scene_document(SessionId id, const nlohmann::order
 void RenderService::move_camera(SessionId id, const CameraMotion& motion) {
   auto lock = impl_->lock();
   Session& s = impl_->find(id);
-  s.pose = apply_motion(s.scene.geometry, s.pose, motion);
+  const Mat4 pose = apply_motion(s.scene.geometry, s.pose, motion);
+  // The pose stays finite whatever the move: one that would not is refused, the pose kept.
+  if (!(model::isometry_error(s.scene.geometry, pose) < 1e-6))
+    throw std::invalid_argument("move: the camera would leave the space's model (a step too long)");
+  s.pose = pose;
   s.last_move = Clock::now();
   impl_->restart(s, true);
 }
@@ -433,8 +450,8 @@ bool RenderService::run_background(const std::function<void(VulkanContext&)>& wo
 }
 
 ServiceStats RenderService::stats() const {
-  auto lock = impl_->lock();
-  return impl_->stats;
+  std::lock_guard hold(impl_->published_mutex);
+  return impl_->published;
 }
 
 }  // namespace geodesic

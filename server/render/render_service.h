@@ -100,6 +100,9 @@ class RenderService {
   // input, leaving the session as it was.
   SceneInfo load_scene(SessionId id, const std::string& bundled_name);
   SceneInfo load_scene_document(SessionId id, const nlohmann::ordered_json& document);
+  // A scene prepared beforehand (load_bundled_scene, parse_scene_document: the daemon does
+  // that off its I/O threads), shown as `name`.
+  SceneInfo install_scene(SessionId id, Scene scene, std::string name);
   void move_camera(SessionId id, const CameraMotion& motion);
   SceneInfo apply_settings(SessionId id, const SessionSettings& settings);
 

@@ -133,9 +133,9 @@ Attempt attempt(GeometryKind kind, const std::vector<Mat4>& generators, const Ve
     try {
       orbit.emplace(kind, moved, options.max_elements, radius + slack);
     } catch (const GroupOrbit::TooLarge&) {
-      fail("more than " + std::to_string(options.max_elements) +
-           " group elements within distance " + std::to_string(radius + slack) +
-           " of the base point: the group is not discrete, or its domain is huge");
+      fail("the group enumeration exceeded " + std::to_string(options.max_elements) +
+           " elements (within distance " + std::to_string(radius + slack) +
+           " of the base point): the group is not discrete, or its domain is huge");
     }
     cell = dirichlet_cell(kind, *orbit, options.tolerance);
     const double needed = 2 * cell.circumradius;
@@ -206,12 +206,15 @@ DirichletDomain dirichlet_domain(GeometryKind kind, const std::vector<Mat4>& gen
                                  const DirichletOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   if (generators.empty()) fail("needs at least one generator");
+  // Once, before the base points: the same group from fewer, shorter generators.
+  const std::vector<Mat4> reduced = reduce_generators(kind, generators);
+  if (reduced.empty()) fail("the generators are all the identity: the group is trivial");
   std::optional<Attempt> best, unbounded;
   int fixed = 0;
   for (const Vec3& base : base_points(kind, generators, options)) {
     Attempt a;
     try {
-      a = attempt(kind, generators, base, options);
+      a = attempt(kind, reduced, base, options);
     } catch (const GroupOrbit::Stabilised&) {
       ++fixed;
       continue;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/preparation_budget.h"
+
 namespace geodesic {
 namespace {
 
@@ -28,10 +30,64 @@ double size_of(const Vec4& p) {
   return std::max({1.0, std::abs(p.x), std::abs(p.y), std::abs(p.z), std::abs(p.w)});
 }
 
+// Products between two looks at the preparation budget (about a millisecond of work).
+constexpr unsigned kBudgetStride = 4096;
+// Nielsen moves stop after this many rounds over the generators: the result is the same group
+// whenever they stop.
+constexpr int kMaxReductionRounds = 64;
+constexpr unsigned kMaxReductionProducts = 1u << 24;
+
+struct Shortened {
+  Mat4 g;
+  double length;
+};
+
 }  // namespace
 
 double displacement(GeometryKind kind, const Vec4& p) {
   return model::geodesic_distance(kind, model::origin(), p);
+}
+
+std::vector<Mat4> reduce_generators(GeometryKind kind, const std::vector<Mat4>& generators) {
+  const auto length_of = [&](const Mat4& g) { return displacement(kind, g * model::origin()); };
+  const auto is_identity = [](const Mat4& g) {
+    return max_abs_difference(g, Mat4::identity()) < 1e-9;
+  };
+  std::vector<Shortened> set;
+  for (const Mat4& g : generators)
+    if (!is_identity(g)) set.push_back({model::reorthonormalize(kind, g), length_of(g)});
+  unsigned products = 0;
+  bool changed = true;
+  for (int round = 0; changed && round < kMaxReductionRounds; ++round) {
+    changed = false;
+    std::stable_sort(set.begin(), set.end(),
+                     [](const Shortened& a, const Shortened& b) { return a.length < b.length; });
+    for (std::size_t i = 1; i < set.size(); ++i) {
+      for (std::size_t j = 0; j < i && !is_identity(set[i].g); ++j) {
+        if (is_identity(set[j].g)) continue;
+        const Mat4 inverse = model::inverse_isometry(kind, set[j].g);
+        for (bool shorter = true; shorter && products < kMaxReductionProducts;) {
+          shorter = false;
+          if (++products % kBudgetStride == 0) check_preparation_budget();
+          for (const Mat4& h : {set[j].g, inverse}) {
+            const Mat4 product = model::reorthonormalize(kind, set[i].g * h);
+            const double length = length_of(product);
+            // Strictly shorter by more than round-off: the moves end.
+            if (length < set[i].length - 1e-9 * std::max(1.0, set[i].length)) {
+              set[i] = {product, length};
+              changed = true;
+              shorter = !is_identity(product);
+              break;
+            }
+          }
+        }
+      }
+    }
+    std::erase_if(set, [&](const Shortened& s) { return is_identity(s.g); });
+  }
+  std::vector<Mat4> result;
+  for (const Shortened& s : set) result.push_back(s.g);
+  return result;
 }
 
 GroupOrbit::GroupOrbit(GeometryKind kind, const std::vector<Mat4>& generators,
@@ -42,8 +98,10 @@ GroupOrbit::GroupOrbit(GeometryKind kind, const std::vector<Mat4>& generators,
       generators_.push_back(model::reorthonormalize(kind, h));
   add(Mat4::identity(), limit);
   // Breadth first: elements_ grows while it is scanned.
+  unsigned products = 0;
   for (std::size_t next = 0; next < elements_.size(); ++next)
     for (const Mat4& h : generators_) {
+      if (++products % kBudgetStride == 0) check_preparation_budget();
       const Mat4 product = elements_[next].g * h;
       // Relative: the form's round-off grows with |g|^2 (cosh^2 of the displacement in H3).
       const double size = size_of(product * model::origin());

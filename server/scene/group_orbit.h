@@ -55,6 +55,13 @@ class GroupOrbit {
   std::unordered_map<Key, std::vector<int>> grid_;
 };
 
+// Generators of the same group, shortened: each is replaced by its product with a shorter one
+// (or that one's inverse) while that moves the origin less, and those that become the identity
+// are dropped (Nielsen moves, which keep the group). Redundant or nearly parallel generators
+// (200 translations by 2, 2.001, 2.002, ...) otherwise multiply the enumeration's work by their
+// count and its ball by their lengths over the group's real step.
+std::vector<Mat4> reduce_generators(GeometryKind kind, const std::vector<Mat4>& generators);
+
 // d(origin, p) in the model.
 double displacement(GeometryKind kind, const Vec4& p);
 

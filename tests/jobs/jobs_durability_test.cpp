@@ -171,6 +171,7 @@ TEST(JobsDurability, AResultTooLargeForTheDiskFailsItsJobAndNothingElse) {
     EXPECT_EQ(failed["state"], "failed") << failed.dump();
     const std::string message = failed["message"];
     std::printf("%s result: %s\n", format, message.c_str());
+    EXPECT_EQ(message.find(dir.string()), std::string::npos) << "a server path: " << message;
     EXPECT_NE(message.find(std::string("result.") + format + ": File too large"), std::string::npos)
         << message;
     EXPECT_FALSE(fs::exists(dir / "jobs" / std::to_string(id))) << "a failed job leaves no files";
@@ -208,6 +209,7 @@ TEST(JobsDurability, AFullDiskFailsTheJobWhoseResultDoesNotFit) {
   const std::string message = failed["message"];
   std::printf("full disk: %s\n", message.c_str());
   EXPECT_NE(message.find("result.exr: No space left on device"), std::string::npos) << message;
+  EXPECT_EQ(message.find(dir.string()), std::string::npos) << "a server path: " << message;
   EXPECT_EQ(api.wait_for(after, job_ended)["state"], "done");
   EXPECT_TRUE(fs::exists(dir / "jobs" / std::to_string(before) / "result.png"));
   for (const auto& entry : fs::recursive_directory_iterator(dir))

@@ -48,6 +48,7 @@ Daemon::Daemon(DaemonOptions options) {
   server_options.port = 0;
   server_options.web_dir = root_ / "web";
   server_options.idle_timeout = options.idle_timeout;
+  server_options.idle_eviction = options.idle_eviction;
   server_options.http_timeout = options.http_timeout;
   server_options.socket_send_buffer = options.socket_send_buffer;
   server_ = std::make_unique<net::Server>(*render_, server_options);

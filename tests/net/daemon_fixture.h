@@ -28,6 +28,7 @@ using namespace std::chrono_literals;
 struct DaemonOptions {
   ServiceLimits limits;
   std::chrono::milliseconds idle_timeout = std::chrono::minutes(10);
+  std::chrono::milliseconds idle_eviction = std::chrono::seconds(60);
   std::chrono::milliseconds http_timeout = std::chrono::seconds(10);
   int socket_send_buffer = 0;
 };

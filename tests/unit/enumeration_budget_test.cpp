@@ -1,0 +1,118 @@
+// Group enumeration against hostile generator texts: redundant generators are reduced first
+// (so hundreds of them cost no more than the group they generate), and a preparation scope's
+// time budget and cancel flag end any enumeration with a named error.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <thread>
+
+#include "scene/default_scene.h"
+#include "scene/dirichlet_domain.h"
+#include "scene/generator_file.h"
+#include "scene/preparation_budget.h"
+#include "scene/scene.h"
+
+namespace geodesic {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// A .gen text of E3 translations by (x, y, z), one matrix each (row convention).
+std::string translation(double x, double y, double z) {
+  char text[160];
+  std::snprintf(text, sizeof text, "1 0 0 0\n0 1 0 0\n0 0 1 0\n%.17g %.17g %.17g 1\n\n", x, y, z);
+  return text;
+}
+
+// The reproduction: translations by 2, 2.001, 2.002, ... along x (a lattice of step
+// 0.001 on a line, so the quotient is not compact).
+std::string nearly_parallel(int count) {
+  std::string text;
+  for (int i = 0; i < count; ++i) text += translation(2 + i / 1000.0, 0, 0);
+  return text;
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    generator_text_scene(text, "generators");
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(EnumerationBudget, TwoHundredNearlyParallelTranslationsAreRefusedWellUnderASecond) {
+  const auto start = Clock::now();
+  const std::string error = error_of(nearly_parallel(200));
+  const double seconds = seconds_since(start);
+  EXPECT_EQ(error.rfind("generators: ", 0), 0u) << error;
+  EXPECT_NE(error.find("not compact"), std::string::npos) << error;
+  EXPECT_LT(seconds, 0.5) << error;
+  std::printf("200 nearly parallel translations: refused in %.3f s\n", seconds);
+}
+
+TEST(EnumerationBudget, TwoHundredRedundantLatticeGeneratorsGiveTheUnitCube) {
+  // The unit lattice's basis hidden among 197 other lattice vectors, longest first.
+  std::string text;
+  for (int i = 196; i >= 0; --i) text += translation(i % 7 + 1, i / 7 % 7 - 3, i / 49 + 1);
+  text += translation(1, 0, 0) + translation(0, 1, 0) + translation(0, 0, 1);
+  const auto start = Clock::now();
+  const GeneratorSet set = parse_generators(text, "generators");
+  ASSERT_EQ(set.generators.size(), 200u);
+  const DirichletDomain domain = dirichlet_domain(set.kind, set.generators);
+  const double seconds = seconds_since(start);
+  EXPECT_NEAR(domain.volume, 1.0, 1e-9);
+  EXPECT_EQ(domain.manifold.faces.size(), 6u);
+  EXPECT_LT(seconds, 0.5);
+  std::printf("200 redundant lattice generators: the unit cube in %.3f s\n", seconds);
+}
+
+TEST(EnumerationBudget, ASpentBudgetEndsTheEnumerationWithANamedError) {
+  const std::string text = nearly_parallel(7000);  // 337 KB: minutes without a budget
+  const std::atomic<bool> never{false};
+  const auto start = Clock::now();
+  std::string error;
+  {
+    const PreparationScope budget(0.3, &never);
+    error = error_of(text);
+  }
+  const double seconds = seconds_since(start);
+  EXPECT_EQ(error, "generators: the group enumeration exceeded 0.3 s (the server's time budget "
+                   "for preparing a scene)");
+  EXPECT_LT(seconds, 0.3 + 0.5);
+}
+
+TEST(EnumerationBudget, CancellingEndsTheEnumerationPromptly) {
+  const std::string text = nearly_parallel(7000);
+  std::atomic<bool> cancelled{false};
+  std::string error;
+  Clock::time_point cancel_time;
+  std::thread worker([&] {
+    const PreparationScope budget(600, &cancelled);
+    error = error_of(text);
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  cancel_time = Clock::now();
+  cancelled = true;
+  worker.join();
+  const double seconds = seconds_since(cancel_time);
+  EXPECT_EQ(error, "generators: the group enumeration was cancelled (the server is stopping)");
+  EXPECT_LT(seconds, 0.2);
+}
+
+TEST(EnumerationBudget, NoScopeChecksNothing) {
+  EXPECT_NO_THROW(check_preparation_budget());
+  const PreparationScope spent(0, nullptr);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  EXPECT_THROW(check_preparation_budget(), SceneError);
+}
+
+}  // namespace
+}  // namespace geodesic
