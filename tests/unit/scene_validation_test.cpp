@@ -71,7 +71,7 @@ TEST(SceneLoader, RejectsInvalidDocumentsNamingTheField) {
       {R"({"render": {"lighting": "phong"}})",
        "render.lighting: unknown value \"phong\" (expected one of \"physical\", \"paper\")"},
       {R"({"render": {"light_sampling": "nee"}})",
-       "render.light_sampling: unknown value \"nee\" (expected one of \"mis\", \"bsdf\")"},
+       "render.light_sampling: unknown value \"nee\" (expected one of \"mis\", \"bsdf\", \"light\")"},
       {R"({"render": {"light_cutoff": 0}})", "render.light_cutoff: must be > 0"},
       {R"({"render": {"clamp": -1}})", "render.clamp: must be > 0"},
       {R"({"materials": {"red": {"transmission": 0.5, "ior": 11}}})",
