@@ -202,7 +202,7 @@ void WebSocketSession::handle_message(const std::string& text) {
 void WebSocketSession::prepare_open(const OpenRequest& open) {
   preparing_ = true;
   const bool queued = context_.preparation->submit([self = shared_from_this(), open] {
-    Prepared prepared{open};
+    Prepared prepared{open, std::nullopt, {}, {}, {}};
     try {
       const RenderService& render = self->context_.render;
       if (open.scene) {

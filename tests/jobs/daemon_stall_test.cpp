@@ -82,8 +82,15 @@ TEST(DaemonStall, HostileGeneratorsStallNeitherHealthNorFrames) {
   for (auto& reply : replies) {
     const ApiReply r = reply.get();
     EXPECT_EQ(r.status, 400u) << r.body;
-    EXPECT_EQ(r.json["error"], "generators: the group enumeration exceeded 3 s (the server's time "
-                               "budget for preparing a scene)") << r.body;
+    // The translations are all multiples of 0.001 along one axis: once the Nielsen reduction
+    // gets there within the budget (a fast or idle machine), the honest answer is the slab's;
+    // otherwise the budget's (EnumerationBudget.* hold that one deterministically).
+    const std::string error = r.json.value("error", "");
+    EXPECT_TRUE(error == "generators: the group enumeration exceeded 3 s (the server's time "
+                         "budget for preparing a scene)" ||
+                error == "generators: the Dirichlet domain is unbounded: the quotient of "
+                         "euclidean space by these generators is not compact")
+        << r.body;
   }
   EXPECT_GT(health_checks, 20);
   EXPECT_LT(slowest_health, 0.1);
