@@ -202,6 +202,8 @@ Json JobRecord::status_json(bool detail) const {
   json["elapsed"] = elapsed;
   json["estimated_error"] = error >= 0 ? Json(error) : Json(nullptr);
   json["checkpoint_samples"] = checkpoint_samples;
+  json["non_finite_samples"] = non_finite_samples;
+  json["truncated_geodesics"] = truncated_geodesics;
   json["message"] = message.empty() ? Json(nullptr) : Json(message);
   Json results = Json::object();
   if (state == JobState::Done)

@@ -60,6 +60,8 @@ struct JobRecord {
   double error = -1;     // estimated relative RMS error; < 0 while unknown
   double progress = 0;   // in [0, 1], towards the stop condition
   uint32_t checkpoint_samples = 0;  // samples in the last checkpoint (0: none)
+  // Over every run of the job: samples dropped as NaN/Inf, geodesics cut off at max_crossings.
+  uint64_t non_finite_samples = 0, truncated_geodesics = 0;
   std::string message;   // why it failed
   ConvergenceLog series;
 

@@ -149,8 +149,11 @@ void JobRunner::render() {
     return;
 
   const double elapsed_before = checkpoint ? checkpoint->elapsed : 0;
+  uint64_t non_finite_before = 0, truncated_before = 0;  // counted by earlier runs
   {
     std::lock_guard lock(mutex_);
+    non_finite_before = job_.non_finite_samples;
+    truncated_before = job_.truncated_geodesics;
     // Samples after the checkpoint were lost with the process: the series goes back to it.
     const uint32_t kept = checkpoint ? checkpoint->samples : 0;
     ConvergenceLog series;
@@ -218,8 +221,15 @@ void JobRunner::render() {
     now = {elapsed_before + seconds_since(started), renderer->samples(),
            renderer->estimated_error()};
     const bool reached = stop.reached(now);
+    const uint64_t non_finite = non_finite_before + renderer->non_finite_samples();
+    const uint64_t truncated = truncated_before + renderer->trace_counters().truncated_rays;
+    uint64_t new_non_finite = 0, new_truncated = 0;
     {
       std::lock_guard lock(mutex_);
+      new_non_finite = non_finite - job_.non_finite_samples;
+      new_truncated = truncated - job_.truncated_geodesics;
+      job_.non_finite_samples = non_finite;
+      job_.truncated_geodesics = truncated;
       job_.samples = now.spp;
       job_.elapsed = now.seconds;
       job_.error = now.error;
@@ -229,6 +239,7 @@ void JobRunner::render() {
         last_point = now.seconds;
       }
     }
+    service_.count_background(new_non_finite, new_truncated);
     if (reached) {
       const Image image = renderer->image();
       release();

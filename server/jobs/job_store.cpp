@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <cstdint>
 #include <ctime>
 #include <stdexcept>
@@ -26,13 +27,21 @@ CREATE TABLE IF NOT EXISTS jobs (
   progress REAL NOT NULL DEFAULT 0,
   checkpoint_samples INTEGER NOT NULL DEFAULT 0,
   message TEXT NOT NULL DEFAULT '',
-  series TEXT NOT NULL DEFAULT '[]'
+  series TEXT NOT NULL DEFAULT '[]',
+  non_finite_samples INTEGER NOT NULL DEFAULT 0,  -- samples dropped as NaN/Inf
+  truncated_geodesics INTEGER NOT NULL DEFAULT 0  -- cut off at max_crossings
 );
 )sql";
 
+// Columns added since the first schema, for a store an earlier daemon created.
+constexpr const char* kAddedColumns[] = {
+    "non_finite_samples INTEGER NOT NULL DEFAULT 0",
+    "truncated_geodesics INTEGER NOT NULL DEFAULT 0",
+};
+
 constexpr const char* kColumns =
     "id, state, request, created, samples, elapsed, error, progress, checkpoint_samples, "
-    "message, series";
+    "message, series, non_finite_samples, truncated_geodesics";
 
 // One prepared statement, finalized on every path.
 class Statement {
@@ -85,6 +94,19 @@ void exec(sqlite3* db, const char* sql) {
   }
 }
 
+void add_missing_columns(sqlite3* db) {
+  for (const char* column : kAddedColumns) {
+    const std::string name(column, std::strchr(column, ' '));
+    bool missing = false;
+    {  // finalized before the schema changes
+      Statement info(db, "SELECT count(*) FROM pragma_table_info('jobs') WHERE name = ?");
+      info.bind(1, name);
+      missing = info.step() && info.integer(0) == 0;
+    }
+    if (missing) exec(db, ("ALTER TABLE jobs ADD COLUMN " + std::string(column)).c_str());
+  }
+}
+
 std::string now_iso8601() {
   const std::time_t now = std::time(nullptr);
   std::tm utc{};
@@ -127,6 +149,8 @@ JobRecord read_row(const Statement& row) {
   job.progress = std::clamp(finite_or(row.real(7), 0), 0.0, 1.0);
   job.checkpoint_samples = uint32_t(std::clamp<int64_t>(row.integer(8), 0, UINT32_MAX));
   job.message = row.text(9);
+  job.non_finite_samples = uint64_t(std::max<int64_t>(row.integer(11), 0));
+  job.truncated_geodesics = uint64_t(std::max<int64_t>(row.integer(12), 0));
   try {
     job.state = parse_state(row.text(1));
     job.request = Json::parse(row.text(2));
@@ -155,6 +179,7 @@ JobStore::JobStore(const std::filesystem::path& file) {
     // disk before the call returns, so a 202 means the job survives a crash of the machine too.
     exec(db_, "PRAGMA journal_mode=WAL; PRAGMA synchronous=FULL; PRAGMA busy_timeout=5000;");
     exec(db_, kSchema);
+    add_missing_columns(db_);
   } catch (...) {
     sqlite3_close(db_);
     throw;
@@ -232,7 +257,8 @@ void JobStore::update(const JobRecord& job) {
   std::lock_guard lock(mutex_);
   Statement update(db_,
                    "UPDATE jobs SET state = ?, samples = ?, elapsed = ?, error = ?, progress = ?, "
-                   "checkpoint_samples = ?, message = ?, series = ? WHERE id = ?");
+                   "checkpoint_samples = ?, message = ?, series = ?, non_finite_samples = ?, "
+                   "truncated_geodesics = ? WHERE id = ?");
   update.bind(1, std::string(state_name(job.state)))
       .bind(2, int64_t(job.samples))
       .bind(3, job.elapsed)
@@ -241,7 +267,9 @@ void JobStore::update(const JobRecord& job) {
       .bind(6, int64_t(job.checkpoint_samples))
       .bind(7, job.message)
       .bind(8, job.series.to_json()["series"].dump())
-      .bind(9, job.id)
+      .bind(9, int64_t(job.non_finite_samples))
+      .bind(10, int64_t(job.truncated_geodesics))
+      .bind(11, job.id)
       .step();
 }
 

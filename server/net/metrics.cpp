@@ -27,6 +27,11 @@ std::string prometheus_metrics(const ServiceStats& stats, const NetCounters& cou
          stats.samples_per_second);
   metric(out, "geodesic_queue_depth", "gauge", "Sessions waiting for the render thread.",
          stats.queue_depth);
+  metric(out, "geodesic_non_finite_samples_total", "counter",
+         "Samples dropped as NaN or Inf, every session and job.", stats.non_finite_samples);
+  metric(out, "geodesic_truncated_geodesics_total", "counter",
+         "Geodesics cut off at the scene's max_crossings (returned black), every session and job.",
+         stats.truncated_geodesics);
   out << "# HELP geodesic_jpeg_encode_seconds Time spent encoding JPEG frames.\n"
       << "# TYPE geodesic_jpeg_encode_seconds summary\n"
       << "geodesic_jpeg_encode_seconds_sum " << stats.encode_seconds_sum << '\n'

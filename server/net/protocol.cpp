@@ -179,6 +179,8 @@ std::string frame_message(const FrameInfo& frame) {
                    {"width", frame.width},
                    {"height", frame.height},
                    {"moving", frame.moving},
+                   {"non_finite_samples", frame.non_finite_samples},
+                   {"truncated_geodesics", frame.truncated_geodesics},
                    {"camera", std::move(camera)}});
 }
 

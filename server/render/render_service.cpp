@@ -58,6 +58,10 @@ struct Session {
   uint32_t batch = 1;     // samples per pass, adapted to kSliceSeconds
   uint32_t next_row = 0;  // where the current pass goes on: large images render in bands
   double seconds_per_pixel_sample = 0;  // measured, smoothed
+  // The renderer's device counters as last added to the totals (the truncated count starts over
+  // with each view), and the totals since the scene was installed, which frames report.
+  uint64_t non_finite = 0, truncated = 0;
+  uint64_t scene_non_finite = 0, scene_truncated = 0;
 };
 
 struct RenderService::Impl {
@@ -142,6 +146,7 @@ struct RenderService::Impl {
       throw SceneError("render.max_depth: must be <= " + std::to_string(limits.max_depth) + " on this server");
     auto renderer = std::make_unique<Renderer>(*ctx, scene);
     s.renderer = std::move(renderer);
+    s.non_finite = s.truncated = s.scene_non_finite = s.scene_truncated = 0;
     s.scene = std::move(scene);
     s.scene_name = std::move(name);
     s.width = s.scene.render.width;
@@ -166,6 +171,7 @@ struct RenderService::Impl {
     // indirect light comes back once the camera is still.
     s.renderer->set_max_depth(moving ? std::min(1, s.scene.render.max_depth) : s.scene.render.max_depth);
     s.pose = s.renderer->set_view(s.pose, w, h);
+    s.truncated = 0;  // set_view clears the tracer's counters, all but the non-finite one
     s.reset_time = Clock::now();
     s.batch = 1;
     s.next_row = 0;
@@ -295,9 +301,20 @@ struct RenderService::Impl {
     stats.encode_seconds_sum += seconds_since(encode_start);
     ++stats.encode_count;
     ++stats.frames;
+    // A counter below the last one added belongs to a new renderer (after a device loss).
+    const uint64_t non_finite = s.renderer->non_finite_samples();
+    const uint64_t truncated = s.renderer->trace_counters().truncated_rays;
+    const uint64_t new_non_finite = non_finite >= s.non_finite ? non_finite - s.non_finite : non_finite;
+    const uint64_t new_truncated = truncated >= s.truncated ? truncated - s.truncated : truncated;
+    s.non_finite = non_finite;
+    s.truncated = truncated;
+    s.scene_non_finite += new_non_finite;
+    s.scene_truncated += new_truncated;
+    stats.non_finite_samples += new_non_finite;
+    stats.truncated_geodesics += new_truncated;
     frame->info = {++s.frame, s.renderer->samples(), seconds_since(s.reset_time),
                    s.renderer->estimated_error(), s.renderer->width(), s.renderer->height(),
-                   s.moving, s.pose};
+                   s.moving, s.pose, s.scene_non_finite, s.scene_truncated};
 
     const double window = seconds_since(window_start);
     if (window > 1.0) {
@@ -447,6 +464,13 @@ bool RenderService::run_background(const std::function<void(VulkanContext&)>& wo
   } give_back{impl};
   work(*impl.ctx);
   return true;
+}
+
+void RenderService::count_background(uint64_t non_finite_samples, uint64_t truncated_geodesics) {
+  std::lock_guard lock(impl_->mutex);
+  impl_->stats.non_finite_samples += non_finite_samples;
+  impl_->stats.truncated_geodesics += truncated_geodesics;
+  impl_->publish();
 }
 
 ServiceStats RenderService::stats() const {

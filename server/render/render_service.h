@@ -29,6 +29,9 @@ struct FrameInfo {
   int width = 0, height = 0;
   bool moving = false;    // reduced resolution right after a move
   Mat4 camera;            // the camera isometry
+  // Since the session's scene was loaded: samples dropped as NaN/Inf, and geodesics cut off at
+  // the scene's max_crossings (they return black: docs/light-transport.md).
+  uint64_t non_finite_samples = 0, truncated_geodesics = 0;
 };
 
 struct EncodedFrame {
@@ -53,6 +56,8 @@ struct ServiceStats {
   double encode_seconds_sum = 0;  // total JPEG encode time
   uint64_t encode_count = 0;
   int queue_depth = 0;            // sessions waiting for the render thread
+  uint64_t non_finite_samples = 0;   // dropped as NaN/Inf, every session and job so far
+  uint64_t truncated_geodesics = 0;  // cut off at max_crossings, every session and job so far
   std::string device;
 };
 
@@ -107,6 +112,8 @@ class RenderService {
   SceneInfo apply_settings(SessionId id, const SessionSettings& settings);
 
   ServiceStats stats() const;
+  // Adds a render job's new non-finite samples and truncated geodesics to stats().
+  void count_background(uint64_t non_finite_samples, uint64_t truncated_geodesics);
 
   // Low-priority work (render jobs): waits until the render thread hands over the device, then
   // runs `work(device)` on the calling thread with the device to itself. A hand-over happens

@@ -57,7 +57,7 @@ std::string damage(std::mt19937& random) {
 TEST(DamagedStore, RandomlyDamagedRowsReadAsFailedJobsAndTheRestStayListed) {
   std::mt19937 random(20261123);
   const char* kColumns[] = {"state", "request", "series", "created", "message", "samples",
-                            "elapsed", "progress"};
+                            "elapsed", "progress", "non_finite_samples", "truncated_geodesics"};
   for (int round = 0; round < 150; ++round) {
     TempDir dir;
     const fs::path file = dir.path() / "jobs.sqlite3";
@@ -82,6 +82,37 @@ TEST(DamagedStore, RandomlyDamagedRowsReadAsFailedJobsAndTheRestStayListed) {
     }
     ASSERT_TRUE(store.get(victim).has_value());
   }
+}
+
+// A store written by a daemon before the counters existed (no non_finite_samples or
+// truncated_geodesics columns) opens with its jobs intact, counted zero, and keeps new counts.
+TEST(DamagedStore, AStoreFromBeforeTheCountersGainsThemAndKeepsItsJobs) {
+  TempDir dir;
+  const fs::path file = dir.path() / "jobs.sqlite3";
+  poke(file,
+       "CREATE TABLE jobs (id INTEGER PRIMARY KEY AUTOINCREMENT, state TEXT NOT NULL, request TEXT "
+       "NOT NULL, created TEXT NOT NULL, samples INTEGER NOT NULL DEFAULT 0, elapsed REAL NOT NULL "
+       "DEFAULT 0, error REAL NOT NULL DEFAULT -1, progress REAL NOT NULL DEFAULT 0, "
+       "checkpoint_samples INTEGER NOT NULL DEFAULT 0, message TEXT NOT NULL DEFAULT '', series "
+       "TEXT NOT NULL DEFAULT '[]')",
+       "");
+  poke(file, "INSERT INTO jobs (state, request, created, samples) VALUES ('done', ?, 'then', 8)",
+       kRequest.dump());
+  jobs::JobStore store(file);
+  std::optional<jobs::JobRecord> old = store.get(1);
+  ASSERT_TRUE(old.has_value());
+  EXPECT_EQ(old->state, jobs::JobState::Done);
+  EXPECT_EQ(old->samples, 8u);
+  EXPECT_EQ(old->non_finite_samples, 0u);
+  old->non_finite_samples = 3;
+  old->truncated_geodesics = uint64_t(1) << 40;
+  store.update(*old);
+  const json status = store.get(1)->status_json(false);
+  EXPECT_EQ(status["non_finite_samples"], 3);
+  EXPECT_EQ(status["truncated_geodesics"], uint64_t(1) << 40);
+  EXPECT_EQ(store.insert(kRequest), 2);
+  jobs::JobStore again(file);  // opening once more changes nothing
+  EXPECT_EQ(again.list().size(), 2u);
 }
 
 TEST(DamagedStore, RandomlyDamagedCheckpointsNeverResumeIntoAnotherJob) {

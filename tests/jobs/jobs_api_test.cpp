@@ -50,6 +50,8 @@ TEST(JobsApi, JobRunsToItsFilesAndReport) {
   EXPECT_EQ(done["samples"], 64);
   EXPECT_EQ(done["progress"], 1.0);
   EXPECT_GT(done["estimated_error"].get<double>(), 0.0);
+  EXPECT_EQ(done["non_finite_samples"], 0);
+  EXPECT_EQ(done["truncated_geodesics"], 0);  // a furnace has no faces to cross
   ASSERT_FALSE(done["series"].empty());
   EXPECT_EQ(done["series"].back()["spp"], 64);
   for (const char* format : {"exr", "png", "jpg"})
@@ -179,6 +181,36 @@ TEST(JobsApi, GeneratorTextRendersItsSpace) {
   double brightest = 0;
   for (float v : image.rgb) brightest = std::max(brightest, double(v));
   EXPECT_GT(brightest, 0.2);  // the spheres inside the lens space, not an empty frame
+}
+
+// A geodesic that runs out of face crossings is counted in the job's status and in /metrics:
+// in the 3-torus with one crossing allowed many are cut off, with 64 far fewer.
+TEST(JobsApi, StatusAndMetricsCountGeodesicsCutOffAtTheCrossingCap) {
+  TempDir data;
+  DaemonProcess daemon(data.path() / "data");
+  const JobsApi api(daemon.port());
+  std::ifstream in(GEODESIC_SOURCE_DIR "/scenes/torus-lamps.json");
+  json scene = json::parse(in);
+  uint64_t truncated[2] = {0, 0};
+  for (int i = 0; i < 2; ++i) {
+    scene["manifold"]["max_crossings"] = i == 0 ? 1 : 64;
+    const int64_t id = api.submit(
+        {{"scene", scene}, {"width", 32}, {"height", 24}, {"spp", 4}, {"formats", {"png"}}});
+    const json done = api.wait_for(
+        id, [](const json& s) { return s["state"] != "queued" && s["state"] != "running"; },
+        std::chrono::seconds(240));
+    ASSERT_EQ(done["state"], "done") << done.dump();
+    EXPECT_EQ(done["non_finite_samples"], 0);
+    truncated[i] = done["truncated_geodesics"].get<uint64_t>();
+  }
+  EXPECT_GT(truncated[0], 32u * 24u);  // more than one per pixel over the 4 samples
+  EXPECT_LT(truncated[1] * 10, truncated[0]);
+  const ApiReply metrics = api.get("/metrics");
+  ASSERT_EQ(metrics.status, 200u);
+  const std::string line = "\ngeodesic_truncated_geodesics_total " +
+                           std::to_string(truncated[0] + truncated[1]) + "\n";
+  EXPECT_NE(metrics.body.find(line), std::string::npos) << metrics.body;
+  EXPECT_NE(metrics.body.find("\ngeodesic_non_finite_samples_total 0\n"), std::string::npos);
 }
 
 TEST(JobsApi, BadRequestsNameTheField) {

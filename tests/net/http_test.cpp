@@ -32,7 +32,8 @@ TEST(Http, MetricsNameEveryMetric) {
   for (const char* name :
        {"geodesic_sessions", "geodesic_frames_sent_total", "geodesic_samples_per_second",
         "geodesic_queue_depth", "geodesic_jpeg_encode_seconds_sum",
-        "geodesic_jpeg_encode_seconds_count", "geodesic_frames_dropped_total"})
+        "geodesic_jpeg_encode_seconds_count", "geodesic_frames_dropped_total",
+        "geodesic_non_finite_samples_total", "geodesic_truncated_geodesics_total"})
     EXPECT_NE(response.body().find(std::string("\n") + name + " "), std::string::npos) << name;
 }
 

@@ -125,6 +125,11 @@ TEST(Protocol, ServerMessagesMatchTheSchema) {
   EXPECT_EQ(known_error["error"], 0.25);
   ASSERT_EQ(known_error["camera"].size(), 16u);
   EXPECT_EQ(known_error["camera"][3], 1.5);  // row-major
+  frame.non_finite_samples = 3;
+  frame.truncated_geodesics = 5000000000;  // past 32 bits: counted over many passes
+  const json counted = json::parse(frame_message(frame));
+  EXPECT_EQ(counted["non_finite_samples"], 3);
+  EXPECT_EQ(counted["truncated_geodesics"], 5000000000);
   expect_server_message_valid(frame_message(frame));
   expect_server_message_valid(error_message(ProtocolError("document.objects[0]", "bad \xff")));
 }

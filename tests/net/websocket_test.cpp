@@ -161,6 +161,42 @@ TEST(WebSocket, GeneratorTextOpensTheSpaceItDescribes) {
       << error["message"];
 }
 
+// Frames count the geodesics cut off at max_crossings (and the non-finite samples) since the
+// scene was loaded: growing while it accumulates, kept across a move, in /metrics too, and
+// zero again for a scene without faces.
+TEST(WebSocket, FramesCountGeodesicsCutOffAtTheCrossingCap) {
+  Daemon daemon;
+  WsClient client(daemon.port());
+  client.read_until("scene");
+  std::ifstream in(std::string(GEODESIC_SOURCE_DIR) + "/scenes/torus-lamps.json");
+  json document = json::parse(in);
+  document["manifold"]["max_crossings"] = 1;
+  client.send({{"type", "open"}, {"document", document}});
+  client.read_until("scene");
+  client.send(kSmallFrames);
+  const json first = frame_where(client, is_small).info;
+  EXPECT_GT(first["truncated_geodesics"].get<uint64_t>(), 0u);
+  const json later = frame_where(client, [&](const json& f) {
+                       return is_small(f) && f["spp"] > first["spp"];
+                     }).info;
+  EXPECT_GT(later["truncated_geodesics"], first["truncated_geodesics"]);
+  client.send({{"type", "move"}, {"yaw", 10}});
+  const json moved = frame_where(client, [&](const json& f) { return f["moving"] == true; }).info;
+  EXPECT_GE(moved["truncated_geodesics"], later["truncated_geodesics"]);
+  EXPECT_EQ(moved["non_finite_samples"], 0);
+  const std::string metrics = http_get(daemon.port(), "/metrics").body();
+  const size_t at = metrics.find("\ngeodesic_truncated_geodesics_total ");
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_GE(std::stoull(metrics.substr(at + 36)), moved["truncated_geodesics"].get<uint64_t>());
+
+  client.send({{"type", "open"}, {"scene", "cornell-box"}});
+  client.read_until("scene");
+  // Its own size (a scene's open resets the frame size): no frame of the torus left in flight.
+  const json box = frame_where(client, [](const json& f) { return f["height"] == 512; }).info;
+  EXPECT_EQ(box["truncated_geodesics"], 0);
+  EXPECT_EQ(box["non_finite_samples"], 0);
+}
+
 TEST(WebSocket, OversizedMessageClosesWith1009) {
   Daemon daemon;
   WsClient client(daemon.port());

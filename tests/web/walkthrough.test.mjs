@@ -200,6 +200,13 @@ test('samples accumulate while the camera is still', async () => {
   });
   const rate = await page.textContent('#stat-rate');
   assert.match(rate, /samples\/s$/);
+  // The dropped-sample and cut-off-geodesic counts are shown as the frames give them (the
+  // Cornell box has no faces to cross: both are 0).
+  const frames = receivedOfType('frame');
+  assert.equal(frames.at(-1).non_finite_samples, 0);
+  assert.equal(frames.at(-1).truncated_geodesics, 0);
+  assert.equal(await page.textContent('#stat-nonfinite'), '0');
+  assert.equal(await page.textContent('#stat-truncated'), '0');
 });
 
 test('the depth control sends settings', async () => {
@@ -288,6 +295,10 @@ test('the scene picker switches scenes and the image changes', async () => {
   assert.equal(scene.name, target);
   assert.equal(await page.inputValue('#scene-picker'), target);
   assert.match(await page.textContent('#scene-title'), new RegExp(target));
+  // The cut-off count on the page is one a frame of this scene gave (a quotient may cut some).
+  const truncated = Number(await page.textContent('#stat-truncated'));
+  const counts = receivedOfType('frame').map((f) => f.truncated_geodesics);
+  assert.ok(counts.includes(truncated), `page shows ${truncated}, frames gave ${counts.slice(-5)}`);
 
   const img = await canvasBlocks(page);
   assert.deepEqual([img.width, img.height], [160, 120], 'the page re-applies its resolution to the new scene');

@@ -63,6 +63,8 @@ const stats = new Stats(
     spp: $('stat-spp'),
     elapsed: $('stat-elapsed'),
     error: $('stat-error'),
+    nonFinite: $('stat-nonfinite'),
+    truncated: $('stat-truncated'),
     mode: $('stat-mode'),
   },
   $('error-plot'),

@@ -21,7 +21,8 @@ function formatSeconds(s) {
 }
 
 export class Stats {
-  // fields: { rate, spp, elapsed, error, mode } elements to fill; plot: a canvas.
+  // fields: { rate, spp, elapsed, error, nonFinite, truncated, mode } elements to fill; plot: a
+  // canvas.
   constructor(fields, plot) {
     this.fields = fields;
     this.plot = plot;
@@ -56,6 +57,9 @@ export class Stats {
     const hasError = typeof frame.error === 'number' && Number.isFinite(frame.error);
     this.fields.error.textContent = hasError ? `${(100 * frame.error).toPrecision(3)} %` : '–';
     this.fields.mode.textContent = frame.moving ? 'moving: preview resolution' : '';
+    // Counted since the scene was loaded: moves do not reset them.
+    this.fields.nonFinite.textContent = String(frame.non_finite_samples ?? 0);
+    this.fields.truncated.textContent = String(frame.truncated_geodesics ?? 0);
 
     if (hasError && frame.error > 0 && frame.elapsed > 0) {
       this.points.push([frame.elapsed, frame.error]);
