@@ -133,6 +133,13 @@ Attempt attempt(GeometryKind kind, const std::vector<Mat4>& generators, const Ve
     try {
       orbit.emplace(kind, moved, options.max_elements, radius + slack);
     } catch (const GroupOrbit::TooLarge&) {
+      // A cell still open after growing: a discrete group with an unbounded domain (two
+      // translations in E3) runs into the cap as surely as a dense one does.
+      if (growth > 0 && !cell.polyhedron.bounded)
+        fail(std::string("the Dirichlet domain is unbounded: the quotient of ") +
+             geometry_name(kind) + " space by these generators is not compact (the cell was " +
+             "still open when the enumeration reached " + std::to_string(options.max_elements) +
+             " elements)");
       fail("the group enumeration exceeded " + std::to_string(options.max_elements) +
            " elements (within distance " + std::to_string(radius + slack) +
            " of the base point): the group is not discrete, or its domain is huge");

@@ -219,6 +219,16 @@ TEST(DirichletDomain, NonCompactAndEmptyInputs) {
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("unbounded"), std::string::npos) << e.what();
   }
+  // Two translations: a discrete group whose slab of a domain is still open when the
+  // enumeration reaches its cap; not "not discrete", as it used to say.
+  const Mat4 other = model::translation(GeometryKind::Euclidean, {0, 2, 0});
+  try {
+    dirichlet_domain(GeometryKind::Euclidean, {shift, other});
+    FAIL() << "two translations leave the domain unbounded";
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("unbounded"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find("not discrete"), std::string::npos) << e.what();
+  }
 }
 
 // Curved Spaces' files: every one parses and gives a valid domain whose volume matches the
