@@ -207,6 +207,26 @@ Attempt atlas(Attempt a, double tolerance) {
   return a;
 }
 
+// The dimension of the span of E3 translations (Gram-Schmidt, relative to their lengths), or -1
+// when some generator is not a translation. A group of translations is the lattice it spans:
+// compact quotient only at rank 3, an answer that needs no enumeration (hundreds of
+// collinear translations would otherwise fill the element cap first).
+int translation_rank(GeometryKind kind, const std::vector<Mat4>& generators) {
+  if (kind != GeometryKind::Euclidean) return -1;
+  std::vector<Vec3> basis;
+  for (const Mat4& g : generators) {
+    Vec3 v = (g * model::origin()).xyz();
+    const Mat4 t = model::translation(kind, v);
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        if (std::abs(g.m[i][j] - t.m[i][j]) > 1e-9) return -1;
+    const double size = length(v);
+    for (const Vec3& b : basis) v = v - b * dot(v, b);
+    if (length(v) > 1e-9 * std::max(1.0, size)) basis.push_back(v / length(v));
+  }
+  return int(basis.size());
+}
+
 }  // namespace
 
 DirichletDomain dirichlet_domain(GeometryKind kind, const std::vector<Mat4>& generators,
@@ -216,6 +236,10 @@ DirichletDomain dirichlet_domain(GeometryKind kind, const std::vector<Mat4>& gen
   // Once, before the base points: the same group from fewer, shorter generators.
   const std::vector<Mat4> reduced = reduce_generators(kind, generators);
   if (reduced.empty()) fail("the generators are all the identity: the group is trivial");
+  if (const int rank = translation_rank(kind, reduced); rank >= 0 && rank < 3)
+    fail(std::string("the Dirichlet domain is unbounded: the quotient of euclidean space by "
+                     "these generators is not compact (they are translations spanning only a ") +
+         (rank == 1 ? "line" : "plane") + ")");
   std::optional<Attempt> best, unbounded;
   int fixed = 0;
   for (const Vec3& base : base_points(kind, generators, options)) {

@@ -23,6 +23,7 @@
 #include <gtest/gtest.h>
 
 #include "../jobs/job_daemon.h"
+#include "sanitizer.h"
 
 namespace geodesic::test {
 namespace {
@@ -42,20 +43,7 @@ constexpr auto kJobInterval = 2s;
 // every 10 s is printed: a slow leak shows there before it reaches the bound.
 constexpr long kMaxPeakRssKiB = 1536 * 1024;
 
-// Under AddressSanitizer (scripts/test-hardening.sh) the daemon also carries shadow memory,
-// redzones and a quarantine of freed blocks: the bound above is for the build users run, and
-// the sanitized run prints the figure without holding it to that bound.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kAddressSanitizer = true;
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
+// Under AddressSanitizer the bound is not held (sanitizer.h).
 
 int env_int(const char* name, int fallback) {
   const char* value = std::getenv(name);

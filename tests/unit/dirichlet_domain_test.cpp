@@ -219,14 +219,15 @@ TEST(DirichletDomain, NonCompactAndEmptyInputs) {
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("unbounded"), std::string::npos) << e.what();
   }
-  // Two translations: a discrete group whose slab of a domain is still open when the
-  // enumeration reaches its cap; not "not discrete", as it used to say.
+  // Two translations: a discrete group whose slab of a domain is unbounded; not "not
+  // discrete", as it used to say when the enumeration reached its cap.
   const Mat4 other = model::translation(GeometryKind::Euclidean, {0, 2, 0});
   try {
     dirichlet_domain(GeometryKind::Euclidean, {shift, other});
     FAIL() << "two translations leave the domain unbounded";
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("unbounded"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("spanning only a plane"), std::string::npos) << e.what();
     EXPECT_EQ(std::string(e.what()).find("not discrete"), std::string::npos) << e.what();
   }
 }

@@ -1,11 +1,13 @@
 // Hostile generator texts against a real `geodesic serve`: their enumeration runs on the
 // preparation pool under its time budget, so /healthz answers within 100 ms and an open session
 // keeps receiving frames while two of them are processed, and each gets a named 400. SIGTERM
-// ends the daemon within 2 s idle, while it prepares hostile scenes, while a job renders and
-// with a WebSocket session open.
+// ends the daemon within 2 s idle, while it prepares hostile scenes, and while a job renders with
+// a WebSocket session open that answers the close; a session that never answers it is cut after
+// the server's 1 s grace. Time bounds are held in the build users run (sanitizer.h).
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <future>
@@ -15,7 +17,8 @@
 #include <sys/wait.h>
 
 #include "../net/daemon_fixture.h"
-#include "job_daemon.h"
+#include "../jobs/job_daemon.h"
+#include "sanitizer.h"
 
 namespace geodesic::test {
 namespace {
@@ -89,13 +92,16 @@ TEST(DaemonStall, HostileGeneratorsStallNeitherHealthNorFrames) {
     EXPECT_TRUE(error == "generators: the group enumeration exceeded 3 s (the server's time "
                          "budget for preparing a scene)" ||
                 error == "generators: the Dirichlet domain is unbounded: the quotient of "
-                         "euclidean space by these generators is not compact")
+                         "euclidean space by these generators is not compact (they are "
+                         "translations spanning only a line)")
         << r.body;
   }
   EXPECT_GT(health_checks, 20);
-  EXPECT_LT(slowest_health, 0.1);
   EXPECT_GT(frames.load(), 5);
-  EXPECT_LT(answer_seconds, 3 + 2.0);
+  if (!kAddressSanitizer) {
+    EXPECT_LT(slowest_health, 0.1);
+    EXPECT_LT(answer_seconds, 3 + 2.0);
+  }
   std::printf("two hostile generator texts: answered 400 after %.2f s; %d /healthz, slowest "
               "%.0f ms; %d frames, longest gap %.0f ms\n",
               answer_seconds, health_checks, slowest_health * 1000, frames.load(),
@@ -114,10 +120,11 @@ double terminate(DaemonProcess& daemon) {
 TEST(DaemonStall, SigtermEndsTheDaemonWithinTwoSecondsInEveryState) {
   TempDir data;
   const std::vector<std::string> args = {"--checkpoint-seconds", "1"};
+  const double bound = kAddressSanitizer ? INFINITY : 2.0;
   {
     DaemonProcess daemon(data.path() / "idle", args);
     const double s = terminate(daemon);
-    EXPECT_LT(s, 2.0);
+    EXPECT_LT(s, bound);
     std::printf("SIGTERM idle: %.2f s\n", s);
   }
   {
@@ -131,12 +138,12 @@ TEST(DaemonStall, SigtermEndsTheDaemonWithinTwoSecondsInEveryState) {
       }));
     std::this_thread::sleep_for(1s);
     const double s = terminate(daemon);
-    EXPECT_LT(s, 2.0);
+    EXPECT_LT(s, bound);
     std::printf("SIGTERM while preparing hostile generators: %.2f s\n", s);
     for (auto& reply : replies) reply.wait();
   }
-  {
-    DaemonProcess daemon(data.path() / "rendering", args);
+  for (const bool answers : {true, false}) {
+    DaemonProcess daemon(data.path() / (answers ? "rendering" : "stuck"), args);
     const JobsApi api(daemon.port());
     const int64_t id = api.submit({{"scene", "cornell-box"}, {"width", 320}, {"height", 240},
                                    {"spp", 1 << 20}, {"formats", {"png"}}});
@@ -144,9 +151,15 @@ TEST(DaemonStall, SigtermEndsTheDaemonWithinTwoSecondsInEveryState) {
     WsClient session(daemon.port());
     session.read_until("scene");
     session.read_frame();
+    // A browser answers the server's close; a stuck client never reads again.
+    std::future<uint16_t> close_code;
+    if (answers)
+      close_code = std::async(std::launch::async, [&] { return session.read_until_close(10s); });
     const double s = terminate(daemon);
-    EXPECT_LT(s, 2.0);
-    std::printf("SIGTERM while a job renders and a session is open: %.2f s\n", s);
+    if (answers) EXPECT_EQ(close_code.get(), 1001u);  // going away
+    EXPECT_LT(s, answers ? bound : 1.0 + bound);
+    std::printf("SIGTERM while a job renders and a session is open (%s): %.2f s\n",
+                answers ? "answering the close" : "stuck", s);
   }
 }
 

@@ -1,6 +1,8 @@
 // How render jobs share the device with interactive sessions (RenderService::run_background):
 // back to back when no session is open, never while a session is moving (walking keeps its
-// frame rate), and one turn per round of the sessions once they are still.
+// frame rate), and one turn per round of the sessions once they are still. "Moving" is a move
+// within the last 0.25 s: under AddressSanitizer, whose slowness stretches the test's own
+// 50 ms steps past that, the counts are printed, not held (sanitizer.h).
 #include <atomic>
 #include <chrono>
 #include <thread>
@@ -9,6 +11,7 @@
 
 #include "../render/render_fixture.h"
 #include "render/render_service.h"
+#include "sanitizer.h"
 
 namespace geodesic::test {
 namespace {
@@ -44,8 +47,15 @@ TEST(BackgroundTurns, JobsWaitWhileASessionMovesAndShareWhenItIsStill) {
     std::this_thread::sleep_for(50ms);
     service.move_camera(id, {.yaw = 0.5});
   }
-  EXPECT_EQ(turns.load(), at_first_move) << "a job had the device while the session moved";
-  EXPECT_GT(frames.load(), frames_at_first_move + 5) << "the moving session got no frames";
+  const int turns_while_moving = turns.load() - at_first_move;
+  const int frames_while_moving = frames.load() - frames_at_first_move;
+  std::printf("walking for a second: %d job turns, %d frames\n", turns_while_moving,
+              frames_while_moving);
+  EXPECT_GT(frames_while_moving, 0) << "the moving session got no frames";
+  if (!kAddressSanitizer) {
+    EXPECT_EQ(turns_while_moving, 0) << "a job had the device while the session moved";
+    EXPECT_GT(frames_while_moving, 5) << "the moving session got no frames";
+  }
 
   std::this_thread::sleep_for(1500ms);  // still (settled after 0.25 s): jobs share again
   EXPECT_GT(turns.load(), at_first_move + 5);
