@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "render/chart_bounds.h"
+#include "render/spatial_order.h"
 
 namespace geodesic {
 namespace {
@@ -92,6 +93,39 @@ void pack_cell_spheres(const Scene& scene, const Cell& cell, uint32_t cell_index
   }
 }
 
+// A cell's triangles (from `first`) and its sphere refs (from `first_ref`) in median-split order of
+// their chart boxes' centres (render/spatial_order.h). Triangle vertices are not shared, so
+// positions and normals move with their triangle and the indices stay 0, 1, 2, ...
+void order_spatially(uint32_t first, uint32_t first_ref, PackedScene& out) {
+  const auto permute = [](auto& items, size_t begin, size_t stride,
+                          const std::vector<uint32_t>& order) {
+    const std::vector range(items.begin() + long(begin), items.end());
+    for (size_t k = 0; k < order.size(); ++k)
+      for (size_t i = 0; i < stride; ++i) items[begin + k * stride + i] = range[order[k] * stride + i];
+  };
+  std::vector<Vec3> centres;
+  for (size_t t = first; t < out.triangles.size(); ++t) {
+    Vec3 c{};
+    for (int i = 0; i < 3; ++i) {
+      const Float4& x = out.positions[3 * t + i];
+      c += Vec3{x[0], x[1], x[2]} / 3.0;
+    }
+    centres.push_back(c);
+  }
+  std::vector<uint32_t> order = median_split_order(centres);
+  permute(out.triangles, first, 1, order);
+  permute(out.positions, 3 * size_t(first), 3, order);
+  permute(out.normals, 3 * size_t(first), 3, order);
+  centres.clear();
+  for (size_t r = first_ref; r < out.sphere_bounds.size(); ++r) {
+    const GpuAabb& b = out.sphere_bounds[r];
+    centres.push_back(Vec3{b.min[0] + b.max[0], b.min[1] + b.max[1], b.min[2] + b.max[2]} / 2.0);
+  }
+  order = median_split_order(centres);
+  permute(out.sphere_refs, first_ref, 1, order);
+  permute(out.sphere_bounds, first_ref, 1, order);
+}
+
 }  // namespace
 
 PackedScene pack_scene(const Scene& scene) {
@@ -127,6 +161,7 @@ PackedScene pack_scene(const Scene& scene) {
     g.first_sphere_ref = uint32_t(out.sphere_refs.size());
     pack_cell_spheres(scene, cell, c, out);
     g.sphere_ref_count = uint32_t(out.sphere_refs.size()) - g.first_sphere_ref;
+    order_spatially(g.first_triangle, g.first_sphere_ref, out);
     out.cell_geometry.push_back(g);
   }
   const CameraPlacement camera = place_camera(k, cells, scene.camera.pose);

@@ -36,8 +36,8 @@ class FrameLog {
 };
 
 TEST(RenderService, StreamsRefiningFramesAndRestartsOnAMove) {
+  FrameLog log;  // outlives the service, whose render thread delivers into it until it ends
   RenderService service("", source_path("scenes").string());
-  FrameLog log;
   const auto id = service.open_session(log.callback());
   service.apply_settings(id, {.width = 64, .height = 48});
 
@@ -62,8 +62,8 @@ TEST(RenderService, StreamsRefiningFramesAndRestartsOnAMove) {
 }
 
 TEST(RenderService, BadInputNamesTheFieldAndKeepsTheScene) {
+  FrameLog log;  // outlives the service, whose render thread delivers into it until it ends
   RenderService service("", source_path("scenes").string());
-  FrameLog log;
   const auto id = service.open_session(log.callback());
   EXPECT_THROW(service.load_scene(id, "no-such-scene"), SceneError);
   try {
@@ -81,8 +81,8 @@ TEST(RenderService, BadInputNamesTheFieldAndKeepsTheScene) {
 }
 
 TEST(RenderService, SessionsShareTheDeviceFairly) {
+  FrameLog a, b;  // outlive the service (its render thread delivers into them)
   RenderService service("", source_path("scenes").string(), {.max_sessions = 2});
-  FrameLog a, b;
   const auto first = service.open_session(a.callback());
   const auto second = service.open_session(b.callback());
   EXPECT_THROW(service.open_session(FrameLog().callback()), std::runtime_error);

@@ -124,17 +124,31 @@ double segment_distance(const Vec3& x, const Vec3& a, const Vec3& b) {
   return length(x - (a + t * (b - a)));
 }
 
+// Rings of six vertices along each edge, sections at most two diameters long (a tight
+// bounding box for each triangle): the first vertex of each edge's rings.
+std::vector<std::size_t> ring_starts(const Polyhedron& p, double radius) {
+  std::vector<std::size_t> starts{0};
+  for (const auto& [ia, ib] : p.edges) {
+    const double sections = std::ceil(length(p.vertices[ib] - p.vertices[ia]) / (4 * radius));
+    starts.push_back(starts.back() + 6 * (std::size_t(sections) + 1));
+  }
+  return starts;
+}
+
 TEST(EdgeTubes, SixSidedCappedPrismPerEdge) {
   const Polyhedron p = make_polyhedron(cube(1));
   const TriangleMesh mesh = make_edge_tubes(GeometryKind::Euclidean, p, 0.05, 3);
   EXPECT_EQ(mesh.material, 3u);
-  EXPECT_EQ(mesh.positions.size(), 12u * 12);
-  EXPECT_EQ(mesh.indices.size(), 12u * (12 + 8) * 3);
+  const std::vector<std::size_t> starts = ring_starts(p, 0.05);
+  // The cube's edges are 2 long: ten sections of 0.2, eleven rings.
+  EXPECT_EQ(starts[1], 66u);
+  EXPECT_EQ(mesh.positions.size(), starts.back());
+  EXPECT_EQ(mesh.indices.size(), 12u * (10 * 12 + 8) * 3);
   EXPECT_TRUE(mesh.normals.empty());
   // Every vertex sits at the radius from its own edge (E3: exponential = chart coordinates).
   for (std::size_t e = 0; e < p.edges.size(); ++e)
-    for (std::size_t k = 0; k < 12; ++k) {
-      const Vec3 x = mesh.positions[e * 12 + k];
+    for (std::size_t k = starts[e]; k < starts[e + 1]; ++k) {
+      const Vec3 x = mesh.positions[k];
       EXPECT_NEAR(segment_distance(x, p.vertices[p.edges[e][0]], p.vertices[p.edges[e][1]]), 0.05,
                   1e-12);
     }
@@ -160,10 +174,12 @@ TEST(EdgeTubes, HyperbolicTubesFollowTheChartEdges) {
   const Manifold m = make_mirrored_dodecahedron();
   constexpr auto kind = GeometryKind::Hyperbolic;
   const TriangleMesh mesh = make_edge_tubes(kind, m.domain, 0.02, 0);
-  ASSERT_EQ(mesh.positions.size(), 30u * 12);
+  const std::vector<std::size_t> starts = ring_starts(m.domain, 0.02);
+  ASSERT_EQ(starts.size(), 31u);
+  ASSERT_EQ(mesh.positions.size(), starts.back());
   for (std::size_t e = 0; e < 30; ++e)
-    for (std::size_t k = 0; k < 12; ++k) {
-      const Vec3 x = model::chart(kind, model::exp_origin(kind, mesh.positions[e * 12 + k]));
+    for (std::size_t k = starts[e]; k < starts[e + 1]; ++k) {
+      const Vec3 x = model::chart(kind, model::exp_origin(kind, mesh.positions[k]));
       const auto& [ia, ib] = m.domain.edges[e];
       EXPECT_NEAR(segment_distance(x, m.domain.vertices[ia], m.domain.vertices[ib]), 0.02, 1e-9);
     }
