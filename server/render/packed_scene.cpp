@@ -93,15 +93,16 @@ void pack_cell_spheres(const Scene& scene, const Cell& cell, uint32_t cell_index
   }
 }
 
-// A cell's triangles (from `first`) and its sphere refs (from `first_ref`) in median-split order of
-// their chart boxes' centres (render/spatial_order.h). Triangle vertices are not shared, so
+// A cell's triangles (from `first`) and its sphere refs (from `first_ref`) in median-split
+// order of their chart boxes' centres (render/spatial_order.h). Triangle vertices are not shared, so
 // positions and normals move with their triangle and the indices stay 0, 1, 2, ...
 void order_spatially(uint32_t first, uint32_t first_ref, PackedScene& out) {
   const auto permute = [](auto& items, size_t begin, size_t stride,
                           const std::vector<uint32_t>& order) {
     const std::vector range(items.begin() + long(begin), items.end());
     for (size_t k = 0; k < order.size(); ++k)
-      for (size_t i = 0; i < stride; ++i) items[begin + k * stride + i] = range[order[k] * stride + i];
+      for (size_t i = 0; i < stride; ++i)
+        items[begin + k * stride + i] = range[order[k] * stride + i];
   };
   std::vector<Vec3> centres;
   for (size_t t = first; t < out.triangles.size(); ++t) {

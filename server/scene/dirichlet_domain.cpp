@@ -27,6 +27,13 @@ constexpr std::size_t kMaxCuts = 64;
 
 [[noreturn]] void fail(const std::string& reason) { throw SceneError("generators: " + reason); }
 
+// The one answer for a discrete group with a non-compact quotient; `how` (in parentheses, when
+// given) says how it was found.
+[[noreturn]] void fail_unbounded(GeometryKind kind, const std::string& how = "") {
+  fail(std::string("the Dirichlet domain is unbounded: the quotient of ") + geometry_name(kind) +
+       " space by these generators is not compact" + (how.empty() ? "" : " (" + how + ")"));
+}
+
 // The bisector of the origin and a = g . origin, as a chart plane with the origin inside:
 // E3 a.X = |a|^2 / 2; H3 a.X = a_w - 1 (tanh(d/2) from the origin); S3 a.X = 1 - a_w
 // (tan(d/2)). None in S3 for the antipode, whose bisector is the chart's horizon.
@@ -136,10 +143,8 @@ Attempt attempt(GeometryKind kind, const std::vector<Mat4>& generators, const Ve
       // A cell still open after growing: a discrete group with an unbounded domain (two
       // translations in E3) runs into the cap as surely as a dense one does.
       if (growth > 0 && !cell.polyhedron.bounded)
-        fail(std::string("the Dirichlet domain is unbounded: the quotient of ") +
-             geometry_name(kind) + " space by these generators is not compact (the cell was " +
-             "still open when the enumeration reached " + std::to_string(options.max_elements) +
-             " elements)");
+        fail_unbounded(kind, "the cell was still open when the enumeration reached " +
+                                 std::to_string(options.max_elements) + " elements");
       fail("the group enumeration exceeded " + std::to_string(options.max_elements) +
            " elements (within distance " + std::to_string(radius + slack) +
            " of the base point): the group is not discrete, or its domain is huge");
@@ -237,9 +242,8 @@ DirichletDomain dirichlet_domain(GeometryKind kind, const std::vector<Mat4>& gen
   const std::vector<Mat4> reduced = reduce_generators(kind, generators);
   if (reduced.empty()) fail("the generators are all the identity: the group is trivial");
   if (const int rank = translation_rank(kind, reduced); rank >= 0 && rank < 3)
-    fail(std::string("the Dirichlet domain is unbounded: the quotient of euclidean space by "
-                     "these generators is not compact (they are translations spanning only a ") +
-         (rank == 1 ? "line" : "plane") + ")");
+    fail_unbounded(kind, std::string("they are translations spanning only a ") +
+                             (rank == 1 ? "line" : "plane"));
   std::optional<Attempt> best, unbounded;
   int fixed = 0;
   for (const Vec3& base : base_points(kind, generators, options)) {
@@ -263,8 +267,7 @@ DirichletDomain dirichlet_domain(GeometryKind kind, const std::vector<Mat4>& gen
   if (!best) {
     if (fixed == static_cast<int>(base_points(kind, generators, options).size()))
       fail("every base point tried is fixed by a group element: the group is not discrete");
-    fail(std::string("the Dirichlet domain is unbounded: the quotient of ") +
-         geometry_name(kind) + " space by these generators is not compact");
+    fail_unbounded(kind);
   }
   best->domain.seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
