@@ -9,6 +9,7 @@
 #include "jobs/checkpoint.h"
 #include "jobs/durable_file.h"
 #include "render/image_io.h"
+#include "render/pass_slicer.h"
 #include "render/renderer.h"
 #include "render/vulkan_context.h"
 
@@ -19,11 +20,6 @@ using Clock = std::chrono::steady_clock;
 
 // A series point at most this often (and at the end), so long jobs keep a short report.
 constexpr double kSeriesInterval = 0.25;
-// Passes of more samples than this are not faster, and a seconds stop would overshoot.
-constexpr uint32_t kMaxBatch = 256;
-// Rows of the first band, before the cost of a row is known (a small start keeps the first turn
-// within about a slice on any image).
-constexpr int kFirstBand = 8;
 // Device losses a job starts over after (from its checkpoint, on the service's new device)
 // before it fails.
 constexpr int kDeviceLossRetries = 3;
@@ -132,16 +128,17 @@ void JobRunner::render() {
   }
 
   std::unique_ptr<Renderer> renderer;
-  // Vulkan objects are made and freed only while this job holds the device, on every way out.
+  // The renderer is built and freed beside the rendering, not in a device turn (the sessions
+  // go on meanwhile), and freed on every way out.
   auto release = [&] {
-    if (renderer && !service_.run_background([&](VulkanContext&) { renderer.reset(); }))
+    if (renderer && !service_.run_beside([&](VulkanContext&) { renderer.reset(); }))
       renderer.reset();  // the service is being destroyed: no session renders any more
   };
   struct ReleaseOnExit {
     decltype(release)& free_renderer;
     ~ReleaseOnExit() { free_renderer(); }
   } release_on_exit{release};
-  if (!service_.run_background([&](VulkanContext& ctx) {
+  if (!service_.run_beside([&](VulkanContext& ctx) {
         renderer = std::make_unique<Renderer>(ctx, job.scene);
         renderer->set_view(job.scene.camera.pose, width, height);
         if (checkpoint) renderer->restore(checkpoint->samples, checkpoint->sums);
@@ -181,39 +178,19 @@ void JobRunner::render() {
     save(JobState::Running);
   };
   double last_point = -kSeriesInterval;
-  uint32_t batch = 1, next_row = 0;
-  double seconds_per_pixel_sample = 0;
+  PassSlicer slicer(RenderService::kSliceSeconds);
   ErrorSample now{elapsed_before, checkpointed, -1};  // at the end of the last whole pass
   // A stop (the daemon shutting down) first finishes the pass in progress.
-  while (!stop_ || next_row != 0) {
+  while (!stop_ || slicer.in_pass()) {
     if (cancel_) {
       release();
       return save(JobState::Cancelled);
     }
+    if (!slicer.in_pass() && stop.spp)  // the last pass ends exactly at the spp asked for
+      slicer.limit_batch(*stop.spp - renderer->samples());
     bool pass_done = false;
-    const bool had_turn = service_.run_background([&](VulkanContext&) {
-      if (next_row == 0 && stop.spp)  // the last pass ends exactly at the spp asked for
-        batch = std::min(batch, *stop.spp - renderer->samples());
-      const double row_cost = seconds_per_pixel_sample * width * batch;
-      const int rows = row_cost > 0 ? std::clamp(int(RenderService::kSliceSeconds / row_cost), 1, height)
-                                    : kFirstBand;
-      const int band = std::min(rows, height - int(next_row));
-      const auto start = Clock::now();
-      renderer->render_rows(batch, next_row, uint32_t(band));
-      const double took = seconds_since(start);
-      const double cost = took / (double(batch) * width * band);
-      seconds_per_pixel_sample =
-          seconds_per_pixel_sample > 0 ? 0.7 * seconds_per_pixel_sample + 0.3 * cost : cost;
-      next_row += uint32_t(band);
-      if (int(next_row) < height) return;
-      renderer->finish_pass(batch);
-      next_row = 0;
-      pass_done = true;
-      if (band == height) {  // the whole pass fit in one turn: size the next one to a turn
-        if (took < RenderService::kSliceSeconds / 2 && batch < kMaxBatch) batch *= 2;
-        else if (took > RenderService::kSliceSeconds * 2 && batch > 1) batch /= 2;
-      }
-    });
+    const bool had_turn =
+        service_.run_background([&](VulkanContext&) { pass_done = slicer.render_slice(*renderer); });
     if (!had_turn) break;  // the service is stopping
     if (!pass_done) continue;
 
@@ -257,7 +234,7 @@ void JobRunner::render() {
   }
   // A shutdown: the store keeps the job running, to resume from a checkpoint of every sample
   // rendered (a pass cut short by the service stopping is not one: it goes back to the last).
-  if (next_row == 0 && now.spp > checkpointed) save_checkpoint(now);
+  if (!slicer.in_pass() && now.spp > checkpointed) save_checkpoint(now);
 }
 
 }  // namespace geodesic::jobs

@@ -91,22 +91,41 @@ void WebSocketSession::on_accept(beast::error_code ec) {
   relay_ = std::make_shared<FrameRelay>();
   relay_->session = weak_from_this();
   relay_->strand = ws_.get_executor();
-  open_render_session(kEvictionRetries);
+  // The first scene's renderer is built on the preparation pool, as every other one.
+  auto build = [self = shared_from_this()] {
+    auto first = std::make_shared<PreparedScene>();
+    std::string failure;
+    try {
+      *first = self->context_.render.prepare_bundled_scene("cornell-box");
+    } catch (const std::exception& e) {
+      failure = e.what();
+    }
+    asio::post(self->ws_.get_executor(), [self, first, failure] {
+      if (!failure.empty())
+        return self->close(static_cast<uint16_t>(websocket::close_code::internal_error), failure);
+      self->open_render_session(kEvictionRetries, first);
+    });
+  };
+  if (!context_.preparation) return build();
+  if (!context_.preparation->submit(build))
+    close(static_cast<uint16_t>(websocket::close_code::try_again_later),
+          "the server is busy preparing other scenes; try again shortly");
 }
 
 // A full server first asks its longest-silent session (no message for idle_eviction) to give up
 // its slot, then tries again shortly; without one the client gets 1013.
-void WebSocketSession::open_render_session(int retries) {
+void WebSocketSession::open_render_session(int retries, std::shared_ptr<PreparedScene> first) {
   RenderService& render = context_.render;
   try {
     id_ = render.open_session(
+        std::move(*first),
         [relay = relay_](std::shared_ptr<const EncodedFrame> frame) { relay->deliver(frame); },
         [relay = relay_](const std::string& reason) { relay->fail(reason); });
   } catch (const std::exception& e) {
     if (retries > 0 && (retries < kEvictionRetries || evict_idle_session())) {
       timer_.expires_after(kEvictionRetryDelay);
-      timer_.async_wait([self = shared_from_this(), retries](beast::error_code ec) {
-        if (!ec) self->open_render_session(retries - 1);
+      timer_.async_wait([self = shared_from_this(), retries, first](beast::error_code ec) {
+        if (!ec) self->open_render_session(retries - 1, first);
       });
       return;
     }
@@ -153,16 +172,17 @@ void WebSocketSession::on_read(beast::error_code ec, std::size_t) {
     read();
 }
 
-// A scene for `open`, or the error to send.
+// What the preparation pool made for an `open` (its scene) or for settings larger than the
+// session's buffers (a renderer at the new size), or the error to send.
 struct WebSocketSession::Prepared {
-  OpenRequest open;
-  std::optional<Scene> scene;
-  std::string name;
+  ClientMessage message;
+  std::optional<PreparedScene> scene;
   std::string error;    // an `error` message for the client
   std::string failure;  // an unexpected exception: the session closes with 1011
 };
 
-// Runs the request on this strand; an `open` is prepared on the preparation pool.
+// Runs the request on this strand; an `open`, and settings that need a new renderer, are
+// prepared on the preparation pool.
 void WebSocketSession::handle_message(const std::string& text) {
   if (!id_) return;
   RenderService& render = context_.render;
@@ -173,8 +193,10 @@ void WebSocketSession::handle_message(const std::string& text) {
     return send_text(error_message(e));
   }
   const OpenRequest* open = std::get_if<OpenRequest>(&message);
-  if (open && context_.preparation) return prepare_open(*open);
+  const auto* settings = std::get_if<SessionSettings>(&message);
   try {
+    if (context_.preparation && (open || (settings && !render.settings_fit(*id_, *settings))))
+      return prepare(std::move(message));
     if (open) {
       send_text(scene_message(
           open->scene        ? render.load_scene(*id_, *open->scene)
@@ -184,7 +206,7 @@ void WebSocketSession::handle_message(const std::string& text) {
     } else if (const auto* motion = std::get_if<CameraMotion>(&message)) {
       render.move_camera(*id_, *motion);
     } else {
-      render.apply_settings(*id_, std::get<SessionSettings>(message));
+      render.apply_settings(*id_, *settings);
     }
     waiting_frame_.reset();  // rendered before the change
   } catch (const SceneError& e) {
@@ -196,27 +218,31 @@ void WebSocketSession::handle_message(const std::string& text) {
   }
 }
 
-// The scene (bundled scene, document, generator text) is parsed and its group enumerated on the
-// preparation pool under its time budget, then installed here; no further message is read
-// meanwhile, so messages keep their order while frames go on.
-void WebSocketSession::prepare_open(const OpenRequest& open) {
+// The scene (bundled scene, document, generator text) is parsed and its group enumerated under
+// the pool's time budget, and its renderer built, on the preparation pool, then installed here;
+// no further message is read meanwhile, so messages keep their order while frames go on.
+void WebSocketSession::prepare(ClientMessage message) {
   preparing_ = true;
-  const bool queued = context_.preparation->submit([self = shared_from_this(), open] {
-    Prepared prepared{open, std::nullopt, {}, {}, {}};
+  const bool queued = context_.preparation->submit([self = shared_from_this(), message,
+                                                    id = *id_] {
+    Prepared prepared{message, std::nullopt, {}, {}};
+    const auto* open = std::get_if<OpenRequest>(&message);
     try {
       const RenderService& render = self->context_.render;
-      if (open.scene) {
-        prepared.scene = render.load_bundled_scene(*open.scene);
-        prepared.name = *open.scene;
+      if (!open) {
+        prepared.scene = render.prepare_settings(id, std::get<SessionSettings>(message));
+      } else if (open->scene) {
+        prepared.scene = render.prepare_bundled_scene(*open->scene);
       } else {
-        prepared.scene = render.parse_scene_document(
-            open.generators ? generator_text_scene(*open.generators, "generators") : *open.document);
-        prepared.name = prepared.scene->name.empty() ? "document" : prepared.scene->name;
+        Scene scene = render.parse_scene_document(
+            open->generators ? generator_text_scene(*open->generators, "generators") : *open->document);
+        std::string name = scene.name.empty() ? "document" : scene.name;
+        prepared.scene = render.prepare_scene(std::move(scene), std::move(name));
       }
     } catch (const SceneError& e) {
-      prepared.error = error_message(service_error(e, &open));
+      prepared.error = error_message(service_error(e, open));
     } catch (const std::invalid_argument& e) {
-      prepared.error = error_message(service_error(e, &open));
+      prepared.error = error_message(service_error(e, open));
     } catch (const std::exception& e) {
       prepared.failure = e.what();
     }
@@ -226,25 +252,32 @@ void WebSocketSession::prepare_open(const OpenRequest& open) {
   if (queued) return;
   preparing_ = false;
   send_text(error_message(service_error(
-      std::runtime_error("the server is busy preparing other scenes; try again shortly"), &open)));
+      std::runtime_error("the server is busy preparing other scenes; try again shortly"),
+      std::get_if<OpenRequest>(&message))));
 }
 
 void WebSocketSession::on_prepared(Prepared prepared) {
   preparing_ = false;
+  const auto* open = std::get_if<OpenRequest>(&prepared.message);
   if (id_ && !close_reason_) {
+    RenderService& render = context_.render;
     try {
       if (!prepared.failure.empty()) throw std::runtime_error(prepared.failure);
       if (!prepared.error.empty()) {
         send_text(std::move(prepared.error));
       } else {
-        send_text(scene_message(context_.render.install_scene(*id_, std::move(*prepared.scene),
-                                                              std::move(prepared.name))));
+        if (open) {
+          send_text(scene_message(render.install_scene(*id_, std::move(*prepared.scene))));
+        } else {
+          if (prepared.scene) render.install_scene(*id_, std::move(*prepared.scene));
+          render.apply_settings(*id_, std::get<SessionSettings>(prepared.message));
+        }
         waiting_frame_.reset();  // rendered before the change
       }
     } catch (const SceneError& e) {
-      send_text(error_message(service_error(e, &prepared.open)));
+      send_text(error_message(service_error(e, open)));
     } catch (const std::invalid_argument& e) {
-      send_text(error_message(service_error(e, &prepared.open)));
+      send_text(error_message(service_error(e, open)));
     } catch (const std::exception& e) {
       close(static_cast<uint16_t>(websocket::close_code::internal_error), e.what());
     }

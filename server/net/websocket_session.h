@@ -37,13 +37,13 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   enum class Writing { nothing, text, frame_text, frame_jpeg };
 
   void on_accept(beast::error_code ec);
-  void open_render_session(int retries);
+  void open_render_session(int retries, std::shared_ptr<PreparedScene> first);
   // Asks the session silent longest (beyond idle_eviction) to give up its slot; false if none.
   bool evict_idle_session();
   void read();
   void on_read(beast::error_code ec, std::size_t bytes);
   void handle_message(const std::string& text);
-  void prepare_open(const OpenRequest& open);
+  void prepare(ClientMessage message);
   void on_prepared(Prepared prepared);
   void on_frame(std::shared_ptr<const EncodedFrame> frame);
   void on_render_failed(const std::string& reason);
@@ -72,7 +72,7 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   std::string text_in_flight_;
   Writing writing_ = Writing::nothing;
   bool read_paused_ = false;  // too many replies queued: stop reading until they drain
-  bool preparing_ = false;    // an `open` is on the preparation pool: read on once it is done
+  bool preparing_ = false;  // a message is on the preparation pool: read on once it is done
 
   std::optional<websocket::close_reason> close_reason_;  // set once closing is asked
   std::chrono::steady_clock::time_point close_deadline_;

@@ -28,14 +28,17 @@ struct FrameUniforms {
 };
 static_assert(sizeof(FrameUniforms) == 144, "must match the std140 layout of Frame");
 
-// Which samples one dispatch adds, to which rows (push constants): a sample of a large image
-// can be split into bands of rows, so that the render thread can turn to a camera move or to
-// another session in between.
+// Which samples one dispatch adds, to which pixels (push constants, mirrored by `Push` in
+// shaders/common/scene_data.glsl): a pass over a large image is split into slices (bands of
+// rows, or part of one row: render/pass_slicer.h), so that the render thread can turn to a
+// camera move or to another session in between.
 struct SampleRange {
   uint32_t start;
   uint32_t count;
+  uint32_t column_offset = 0;
   uint32_t row_offset = 0;
-  uint32_t row_count = 0;  // rows in this dispatch
+  uint32_t column_count = 0;  // the dispatch's rectangle of pixels
+  uint32_t row_count = 0;
 };
 
 }  // namespace geodesic

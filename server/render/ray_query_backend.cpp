@@ -39,7 +39,7 @@ class RayQueryBackend : public TraceBackend {
                             &set, 0, nullptr);
     vkCmdPushConstants(cmd, res_.pipeline_layout(), SceneLayout::kShaderStages, 0, sizeof(range),
                        &range);
-    vkCmdDispatch(cmd, (res_.width() + kGroupSizeX - 1) / kGroupSizeX,
+    vkCmdDispatch(cmd, (range.column_count + kGroupSizeX - 1) / kGroupSizeX,
                   (range.row_count + kGroupSizeY - 1) / kGroupSizeY, 1);
   }
 

@@ -51,7 +51,7 @@ class RayTracingBackend : public TraceBackend {
                        sizeof(range), &range);
     VkStridedDeviceAddressRegionKHR callable{};
     ctx_.rt().cmd_trace_rays(cmd, &raygen_region_, &miss_region_, &hit_region_, &callable,
-                             res_.width(), range.row_count, 1);
+                             range.column_count, range.row_count, 1);
   }
 
  private:

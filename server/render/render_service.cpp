@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "render/jpeg_encoder.h"
+#include "render/render_session.h"
 #include "render/renderer.h"
 #include "render/vulkan_context.h"
 #include "scene/scene_loader.h"
@@ -26,15 +27,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Each session gets a slice this long before the next one's turn; a frame follows each slice.
-constexpr double kSliceSeconds = RenderService::kSliceSeconds;
-// After a move, frames are rendered at reduced resolution until the camera has been still this
-// long (fast feedback while walking, full quality when still), as Cycles' viewport does: the
-// divisor is chosen from the measured cost so that one sample of the frame takes about
-// kMovingFrameSeconds.
-constexpr double kSettleSeconds = 0.25;
-constexpr double kMovingFrameSeconds = 0.03;
-constexpr int kMaxMovingDivisor = 8;
 // After a device loss, a new device is tried at most this often.
 constexpr auto kDeviceRetry = std::chrono::seconds(1);
 
@@ -44,25 +36,12 @@ double seconds_since(Clock::time_point t) {
 
 }  // namespace
 
-struct Session {
-  RenderService::FrameCallback on_frame;
-  RenderService::FailureCallback on_failure;
-  Scene scene;
-  std::string scene_name;
-  std::unique_ptr<Renderer> renderer;
-  Mat4 pose;
-  int width = 0, height = 0;  // the full resolution asked for
-  bool moving = false;
-  Clock::time_point last_move, reset_time;
-  uint64_t frame = 0;
-  uint32_t batch = 1;     // samples per pass, adapted to kSliceSeconds
-  uint32_t next_row = 0;  // where the current pass goes on: large images render in bands
-  double seconds_per_pixel_sample = 0;  // measured, smoothed
-  // The renderer's device counters as last added to the totals (the truncated count starts over
-  // with each view), and the totals since the scene was installed, which frames report.
-  uint64_t non_finite = 0, truncated = 0;
-  uint64_t scene_non_finite = 0, scene_truncated = 0;
-};
+PreparedScene::PreparedScene() = default;
+PreparedScene::~PreparedScene() = default;
+PreparedScene::PreparedScene(PreparedScene&&) noexcept = default;
+PreparedScene& PreparedScene::operator=(PreparedScene&&) noexcept = default;
+
+using Session = RenderSession;
 
 struct RenderService::Impl {
   const std::string device_selector;
@@ -76,7 +55,7 @@ struct RenderService::Impl {
   ServiceLimits limits;
   JpegEncoder encoder;
 
-  mutable std::mutex mutex;  // guards everything below and all Vulkan work
+  mutable std::mutex mutex;  // guards everything below and all rendering
   // Callers waiting for the mutex: the render thread steps aside for them between slices, so
   // a move, a new scene or /metrics waits at most one slice.
   mutable std::atomic<int> waiting{0};
@@ -90,6 +69,9 @@ struct RenderService::Impl {
   SessionId next_id = 1;
   SessionId last_served = 0;
   bool stopping = false;
+  // Callers of run_beside working on the device now: the service ends after them.
+  mutable int beside = 0;
+  mutable std::condition_variable beside_done;
   ServiceStats stats;
   // A copy of `stats` for stats(): /healthz and /metrics never wait for the device lock.
   mutable std::mutex published_mutex;
@@ -120,6 +102,8 @@ struct RenderService::Impl {
     wake.notify_all();
     background_turn.notify_all();
     thread.join();
+    std::unique_lock lock(mutex);
+    beside_done.wait(lock, [this] { return beside == 0; });
   }
 
   std::unique_lock<std::mutex> lock() const {
@@ -135,52 +119,17 @@ struct RenderService::Impl {
     return *it->second;
   }
 
-  // Checks the scene against the server's limits, then builds its renderer: on any error the
-  // session keeps its old scene.
-  SceneInfo install(Session& s, Scene scene, std::string name) {
+  void check_limits(const Scene& scene) const {
     if (scene.render.width > limits.max_width)
       throw SceneError("render.width: must be <= " + std::to_string(limits.max_width) + " on this server");
     if (scene.render.height > limits.max_height)
       throw SceneError("render.height: must be <= " + std::to_string(limits.max_height) + " on this server");
     if (scene.render.max_depth > limits.max_depth)
       throw SceneError("render.max_depth: must be <= " + std::to_string(limits.max_depth) + " on this server");
-    auto renderer = std::make_unique<Renderer>(*ctx, scene);
-    s.renderer = std::move(renderer);
-    s.non_finite = s.truncated = s.scene_non_finite = s.scene_truncated = 0;
-    s.scene = std::move(scene);
-    s.scene_name = std::move(name);
-    s.width = s.scene.render.width;
-    s.height = s.scene.render.height;
-    s.pose = s.scene.camera.pose;
-    restart(s, false);
-    return info(s);
   }
 
-  // A new view: reduced resolution while moving, full when still; accumulation starts over.
-  void restart(Session& s, bool moving) {
-    s.moving = moving;
-    int divisor = 1;
-    if (moving) {
-      const double full_sample = s.seconds_per_pixel_sample * s.width * s.height;
-      divisor = std::clamp(int(std::ceil(std::sqrt(full_sample / kMovingFrameSeconds))), 2,
-                           kMaxMovingDivisor);
-    }
-    const int w = std::max(16, s.width / divisor);
-    const int h = std::max(16, s.height / divisor);
-    // Moving frames also trace at most one bounce: direct light shows the shapes, and the
-    // indirect light comes back once the camera is still.
-    s.renderer->set_max_depth(moving ? std::min(1, s.scene.render.max_depth) : s.scene.render.max_depth);
-    s.pose = s.renderer->set_view(s.pose, w, h);
-    s.truncated = 0;  // set_view clears the tracer's counters, all but the non-finite one
-    s.reset_time = Clock::now();
-    s.batch = 1;
-    s.next_row = 0;
-  }
-
-  static SceneInfo info(const Session& s) {
-    return {s.scene_name, geometry_name(s.scene.geometry), s.scene.manifold.name, s.width,
-            s.height, s.scene.render.max_depth};
-  }
+  // True when `renderer` was built on the current device (not on one lost since).
+  bool current(const Renderer& renderer) const { return &renderer.context() == ctx.get(); }
 
   // The render thread: serve sessions round-robin, one slice each.
   void run() {
@@ -248,7 +197,7 @@ struct RenderService::Impl {
     for (auto& [id, s] : sessions) {
       try {
         s->renderer = std::make_unique<Renderer>(*ctx, s->scene);
-        restart(*s, false);
+        s->restart(false);
       } catch (const std::exception& e) {
         failed.emplace_back(id, std::string("render: on the new device: ") + e.what());
       }
@@ -269,60 +218,16 @@ struct RenderService::Impl {
     return true;
   }
 
-  // One slice: a band of rows of the current pass (the whole image when it fits in a slice);
-  // a frame goes out when the pass is complete.
+  // One slice of the session's pass; its frame goes out when the pass is complete.
   void serve(Session& s) {
-    if (s.moving && seconds_since(s.last_move) > kSettleSeconds) restart(s, false);
-    const int width = s.renderer->width(), height = s.renderer->height();
-    const double row_cost = s.seconds_per_pixel_sample * width * s.batch;
-    const int rows = row_cost > 0 ? std::clamp(int(kSliceSeconds / row_cost), 1, height) : height;
-    const int band = std::min(rows, height - int(s.next_row));
-    const auto start = Clock::now();
-    s.renderer->render_rows(s.batch, s.next_row, uint32_t(band));
-    const double took = seconds_since(start);
-    const double pixel_samples = double(s.batch) * width * band;
-    const double cost = took / pixel_samples;
-    s.seconds_per_pixel_sample =
-        s.seconds_per_pixel_sample > 0 ? 0.7 * s.seconds_per_pixel_sample + 0.3 * cost : cost;
-    recent_samples += pixel_samples;
-    s.next_row += uint32_t(band);
-    if (int(s.next_row) < height) return;
-
-    s.renderer->finish_pass(s.batch);
-    s.next_row = 0;
-    if (band == height) {  // the whole pass fit in this slice: size the next one to the slice
-      if (took < kSliceSeconds / 2 && s.batch < 256) s.batch *= 2;
-      else if (took > kSliceSeconds * 2 && s.batch > 1) s.batch /= 2;
-    }
-
-    const auto encode_start = Clock::now();
-    auto frame = std::make_shared<EncodedFrame>();
-    frame->jpeg = encoder.encode(s.renderer->image());
-    stats.encode_seconds_sum += seconds_since(encode_start);
-    ++stats.encode_count;
-    ++stats.frames;
-    // A counter below the last one added belongs to a new renderer (after a device loss).
-    const uint64_t non_finite = s.renderer->non_finite_samples();
-    const uint64_t truncated = s.renderer->trace_counters().truncated_rays;
-    const uint64_t new_non_finite = non_finite >= s.non_finite ? non_finite - s.non_finite : non_finite;
-    const uint64_t new_truncated = truncated >= s.truncated ? truncated - s.truncated : truncated;
-    s.non_finite = non_finite;
-    s.truncated = truncated;
-    s.scene_non_finite += new_non_finite;
-    s.scene_truncated += new_truncated;
-    stats.non_finite_samples += new_non_finite;
-    stats.truncated_geodesics += new_truncated;
-    frame->info = {++s.frame, s.renderer->samples(), seconds_since(s.reset_time),
-                   s.renderer->estimated_error(), s.renderer->width(), s.renderer->height(),
-                   s.moving, s.pose, s.scene_non_finite, s.scene_truncated};
-
+    auto frame = s.serve(encoder, stats, recent_samples);
     const double window = seconds_since(window_start);
     if (window > 1.0) {
       stats.samples_per_second = recent_samples / window;
       recent_samples = 0;
       window_start = Clock::now();
     }
-    s.on_frame(std::move(frame));
+    if (frame) s.on_frame(std::move(frame));
   }
 };
 
@@ -348,23 +253,53 @@ std::vector<std::string> RenderService::bundled_scenes() const {
 
 const ServiceLimits& RenderService::limits() const { return impl_->limits; }
 
-RenderService::SessionId RenderService::open_session(FrameCallback on_frame,
+PreparedScene RenderService::prepare_scene(Scene scene, std::string name) const {
+  impl_->check_limits(scene);
+  PreparedScene prepared;
+  // A device lost during the build: build again on its replacement (a lost device keeps
+  // failing, so this ends).
+  for (int attempt = 0; attempt < 2 && !(prepared.renderer && !prepared.renderer->context().lost());
+       ++attempt) {
+    prepared.renderer.reset();
+    if (!run_beside([&](VulkanContext& ctx) { prepared.renderer = std::make_unique<Renderer>(ctx, scene); }))
+      throw std::runtime_error("render: the server is stopping");
+  }
+  prepared.scene = std::move(scene);
+  prepared.name = std::move(name);
+  return prepared;
+}
+
+PreparedScene RenderService::prepare_bundled_scene(const std::string& name) const {
+  return prepare_scene(load_bundled_scene(name), name);
+}
+
+RenderService::SessionId RenderService::open_session(PreparedScene&& scene, FrameCallback on_frame,
                                                      FailureCallback on_failure) {
-  Scene scene = load_scene_file(std::filesystem::path(impl_->scene_dir) / "cornell-box.json");
   auto lock = impl_->lock();
   if (int(impl_->sessions.size()) >= impl_->limits.max_sessions)
     throw std::runtime_error("too many sessions (" + std::to_string(impl_->limits.max_sessions) +
                              " open)");
+  if (!impl_->current(*scene.renderer)) {  // built on a device lost since
+    lock.unlock();
+    scene = prepare_scene(std::move(scene.scene), std::move(scene.name));
+    return open_session(std::move(scene), std::move(on_frame), std::move(on_failure));
+  }
   auto session = std::make_unique<Session>();
   session->on_frame = std::move(on_frame);
   session->on_failure = std::move(on_failure);
-  impl_->install(*session, std::move(scene), "cornell-box");
+  session->adopt(std::move(scene));
   const SessionId id = impl_->next_id++;
   impl_->sessions[id] = std::move(session);
   impl_->stats.sessions = int(impl_->sessions.size());
   impl_->publish();
   impl_->wake.notify_all();
   return id;
+}
+
+RenderService::SessionId RenderService::open_session(FrameCallback on_frame,
+                                                     FailureCallback on_failure) {
+  return open_session(prepare_bundled_scene("cornell-box"), std::move(on_frame),
+                      std::move(on_failure));
 }
 
 void RenderService::close_session(SessionId id) {
@@ -396,8 +331,21 @@ SceneInfo RenderService::load_scene_document(SessionId id, const nlohmann::order
 }
 
 SceneInfo RenderService::install_scene(SessionId id, Scene scene, std::string name) {
+  return install_scene(id, prepare_scene(std::move(scene), std::move(name)));
+}
+
+SceneInfo RenderService::install_scene(SessionId id, PreparedScene&& scene) {
   auto lock = impl_->lock();
-  return impl_->install(impl_->find(id), std::move(scene), std::move(name));
+  Session& s = impl_->find(id);
+  if (!impl_->current(*scene.renderer)) {  // built on a device lost since
+    lock.unlock();
+    return install_scene(id, std::move(scene.scene), std::move(scene.name));
+  }
+  auto old = std::move(s.renderer);  // freed after the lock
+  s.adopt(std::move(scene));
+  SceneInfo info = s.info();
+  lock.unlock();
+  return info;
 }
 
 void RenderService::move_camera(SessionId id, const CameraMotion& motion) {
@@ -409,29 +357,18 @@ void RenderService::move_camera(SessionId id, const CameraMotion& motion) {
     throw std::invalid_argument("move: the camera would leave the space's model (a step too long)");
   s.pose = pose;
   s.last_move = Clock::now();
-  impl_->restart(s, true);
+  s.restart(true);
 }
 
 SceneInfo RenderService::apply_settings(SessionId id, const SessionSettings& settings) {
-  const ServiceLimits& l = impl_->limits;
-  if (settings.width != 0 && (settings.width < 16 || settings.width > l.max_width))
-    throw std::invalid_argument("width: must be in [16, " + std::to_string(l.max_width) + "]");
-  if (settings.height != 0 && (settings.height < 16 || settings.height > l.max_height))
-    throw std::invalid_argument("height: must be in [16, " + std::to_string(l.max_height) + "]");
-  if (settings.max_depth != -1 && (settings.max_depth < 0 || settings.max_depth > l.max_depth))
-    throw std::invalid_argument("max_depth: must be in [0, " + std::to_string(l.max_depth) + "]");
+  if (auto resized = prepare_settings(id, settings)) install_scene(id, std::move(*resized));
   auto lock = impl_->lock();
   Session& s = impl_->find(id);
   const int width = settings.width ? settings.width : s.width;
   const int height = settings.height ? settings.height : s.height;
   if (width > s.scene.render.width || height > s.scene.render.height) {
-    // Larger than the buffers: rebuild the renderer at the new size.
-    Scene scene = s.scene;
-    scene.render.width = width;
-    scene.render.height = height;
-    scene.camera.pose = s.pose;
-    const std::string name = s.scene_name;
-    impl_->install(s, std::move(scene), name);
+    lock.unlock();  // another scene came in between: build again
+    return apply_settings(id, settings);
   }
   s.width = width;
   s.height = height;
@@ -439,8 +376,34 @@ SceneInfo RenderService::apply_settings(SessionId id, const SessionSettings& set
     s.scene.render.max_depth = settings.max_depth;
     s.renderer->set_max_depth(settings.max_depth);
   }
-  impl_->restart(s, false);
-  return Impl::info(s);
+  s.restart(false);
+  return s.info();
+}
+
+std::optional<PreparedScene> RenderService::prepare_settings(SessionId id,
+                                                             const SessionSettings& settings) const {
+  const ServiceLimits& l = impl_->limits;
+  if (settings.width != 0 && (settings.width < 16 || settings.width > l.max_width))
+    throw std::invalid_argument("width: must be in [16, " + std::to_string(l.max_width) + "]");
+  if (settings.height != 0 && (settings.height < 16 || settings.height > l.max_height))
+    throw std::invalid_argument("height: must be in [16, " + std::to_string(l.max_height) + "]");
+  if (settings.max_depth != -1 && (settings.max_depth < 0 || settings.max_depth > l.max_depth))
+    throw std::invalid_argument("max_depth: must be in [0, " + std::to_string(l.max_depth) + "]");
+  Scene scene;
+  std::string name;
+  {
+    auto lock = impl_->lock();
+    Session& s = impl_->find(id);
+    const int width = settings.width ? settings.width : s.width;
+    const int height = settings.height ? settings.height : s.height;
+    if (width <= s.scene.render.width && height <= s.scene.render.height) return std::nullopt;
+    scene = s.scene;  // the renderer is rebuilt at the new size, from the camera's pose
+    name = s.scene_name;
+    scene.render.width = std::max(s.scene.render.width, width);
+    scene.render.height = std::max(s.scene.render.height, height);
+    scene.camera.pose = s.pose;
+  }
+  return prepare_scene(std::move(scene), std::move(name));
 }
 
 bool RenderService::run_background(const std::function<void(VulkanContext&)>& work) {
@@ -463,6 +426,33 @@ bool RenderService::run_background(const std::function<void(VulkanContext&)>& wo
     }
   } give_back{impl};
   work(*impl.ctx);
+  return true;
+}
+
+bool RenderService::settings_fit(SessionId id, const SessionSettings& settings) const {
+  auto lock = impl_->lock();
+  const Session& s = impl_->find(id);
+  return (settings.width ? settings.width : s.width) <= s.scene.render.width &&
+         (settings.height ? settings.height : s.height) <= s.scene.render.height;
+}
+
+bool RenderService::run_beside(const std::function<void(VulkanContext&)>& work) const {
+  Impl& impl = *impl_;
+  VulkanContext* device = nullptr;
+  {
+    auto lock = impl.lock();
+    if (impl.stopping) return false;
+    device = impl.ctx.get();  // stays valid: lost devices are kept until the service ends
+    ++impl.beside;
+  }
+  struct Done {
+    Impl& impl;
+    ~Done() {
+      std::lock_guard lock(impl.mutex);
+      if (--impl.beside == 0) impl.beside_done.notify_all();
+    }
+  } done{impl};
+  work(*device);
   return true;
 }
 

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,21 @@ struct ServiceLimits {
   int max_width = 1920, max_height = 1080, max_depth = 16;
 };
 
+class Renderer;
+
+// A scene with its renderer built: the expensive part of showing a scene (domain cells,
+// acceleration structures, the pipeline), made by RenderService::prepare_scene on any thread
+// and outside the device lock, so that installing it in a session is cheap.
+struct PreparedScene {
+  PreparedScene();
+  ~PreparedScene();
+  PreparedScene(PreparedScene&&) noexcept;
+  PreparedScene& operator=(PreparedScene&&) noexcept;
+  Scene scene;
+  std::string name;
+  std::unique_ptr<Renderer> renderer;
+};
+
 class RenderService {
  public:
   using SessionId = uint64_t;
@@ -90,9 +106,19 @@ class RenderService {
   std::vector<std::string> bundled_scenes() const;
   const ServiceLimits& limits() const;
 
-  // Opens a session on the default scene ("cornell-box"); throws std::runtime_error when
-  // max_sessions are open. A failed render ends only its own session; after a device loss the
-  // service makes a new device and the other sessions go on, their accumulation started over.
+  // Builds `scene`'s renderer on the calling thread, beside the rendering (not under the device
+  // lock): the daemon calls it on its preparation pool, never on an I/O thread. Throws
+  // SceneError when the scene exceeds the server's limits.
+  PreparedScene prepare_scene(Scene scene, std::string name) const;
+  PreparedScene prepare_bundled_scene(const std::string& name) const;
+
+  // Opens a session on `scene` (the client's first view: the daemon prepares "cornell-box");
+  // throws std::runtime_error when max_sessions are open, leaving `scene` as it was. A failed
+  // render ends only its own session; after a device loss the service makes a new device and
+  // the other sessions go on, their accumulation started over.
+  SessionId open_session(PreparedScene&& scene, FrameCallback on_frame,
+                         FailureCallback on_failure = nullptr);
+  // The same on "cornell-box", prepared on the calling thread.
   SessionId open_session(FrameCallback on_frame, FailureCallback on_failure = nullptr);
   void close_session(SessionId id);
 
@@ -105,11 +131,19 @@ class RenderService {
   // input, leaving the session as it was.
   SceneInfo load_scene(SessionId id, const std::string& bundled_name);
   SceneInfo load_scene_document(SessionId id, const nlohmann::ordered_json& document);
-  // A scene prepared beforehand (load_bundled_scene, parse_scene_document: the daemon does
-  // that off its I/O threads), shown as `name`.
+  // A scene parsed beforehand (load_bundled_scene, parse_scene_document), shown as `name`; its
+  // renderer is built on the calling thread.
   SceneInfo install_scene(SessionId id, Scene scene, std::string name);
+  // A prepared scene: cheap (a renderer built on a device lost since is built again here).
+  SceneInfo install_scene(SessionId id, PreparedScene&& scene);
   void move_camera(SessionId id, const CameraMotion& motion);
+  // Settings larger than the session's buffers need a new renderer, built on the calling
+  // thread; prepare_settings builds it beforehand (nullopt when the buffers are large enough):
+  // install it, then apply the settings.
   SceneInfo apply_settings(SessionId id, const SessionSettings& settings);
+  std::optional<PreparedScene> prepare_settings(SessionId id, const SessionSettings& settings) const;
+  // True when the session's buffers hold the settings' size: apply_settings is cheap.
+  bool settings_fit(SessionId id, const SessionSettings& settings) const;
 
   ServiceStats stats() const;
   // Adds a render job's new non-finite samples and truncated geodesics to stats().
@@ -123,6 +157,11 @@ class RenderService {
   // the service is stopping.
   static constexpr double kSliceSeconds = 0.04;
   bool run_background(const std::function<void(VulkanContext&)>& work);
+  // Runs `work(device)` on the calling thread with the service's current device at once,
+  // beside the rendering and outside the device lock: for building and freeing renderers, which
+  // the device allows from any thread (render/vulkan_context.h). Returns false, without running
+  // `work`, once the service is stopping.
+  bool run_beside(const std::function<void(VulkanContext&)>& work) const;
 
  private:
   struct Impl;

@@ -16,14 +16,15 @@ Renderer::Renderer(VulkanContext& ctx, const Scene& scene, BackendKind backend,
       backend_(make_backend(backend, ctx, resources_)) {}
 
 void Renderer::add_samples(uint32_t samples) {
-  render_rows(samples, 0, uint32_t(height()));
+  render_region(samples, {0, 0, uint32_t(width()), uint32_t(height())});
   finish_pass(samples);
 }
 
-void Renderer::render_rows(uint32_t samples, uint32_t row_begin, uint32_t rows) {
-  if (samples == 0 || rows == 0) return;
+void Renderer::render_region(uint32_t samples, const PixelRegion& region) {
+  if (samples == 0 || region.columns == 0 || region.rows == 0) return;
   ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
-    backend_->record(cmd, SampleRange{samples_, samples, row_begin, rows});
+    backend_->record(cmd, SampleRange{samples_, samples, region.column, region.row,
+                                      region.columns, region.rows});
   });
 }
 

@@ -14,6 +14,11 @@
 
 namespace geodesic {
 
+// A rectangle of pixels.
+struct PixelRegion {
+  uint32_t column = 0, row = 0, columns = 0, rows = 0;
+};
+
 class Renderer {
  public:
   // `variant`: the scene's specialised pipeline, or the all-features one (the baseline the
@@ -23,9 +28,10 @@ class Renderer {
 
   // Adds `samples` samples per pixel, in one submission.
   void add_samples(uint32_t samples);
-  // A band of a pass: adds `samples` samples (numbered from samples()) to rows
-  // [row_begin, row_begin + rows) only; finish_pass(samples) counts them once every band is done.
-  void render_rows(uint32_t samples, uint32_t row_begin, uint32_t rows);
+  // A slice of a pass: adds `samples` samples (numbered from samples()) to the pixels of
+  // `region` only; finish_pass(samples) counts them once every pixel has had them
+  // (render/pass_slicer.h cuts passes so).
+  void render_region(uint32_t samples, const PixelRegion& region);
   void finish_pass(uint32_t samples) { samples_ += samples; }
   uint32_t samples() const { return samples_; }
   uint64_t traced_rays() const { return resources_.traced_rays(); }

@@ -21,7 +21,7 @@ class TraceBackend {
   // is made of.
   virtual const CachedPipeline& pipeline() const = 0;
   virtual std::vector<std::string> entries() const = 0;
-  // Records a dispatch adding `range` samples to every pixel of its rows.
+  // Records a dispatch adding `range` samples to every pixel of its rectangle.
   virtual void record(VkCommandBuffer cmd, SampleRange range) = 0;
 };
 

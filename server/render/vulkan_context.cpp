@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstring>
+#include <mutex>
 #include <set>
 
 #include "render/fault_injection.h"
@@ -261,21 +262,12 @@ VulkanContext::VulkanContext(const std::string& selector) {
                                     &pipeline_properties_};
   vkGetPhysicalDeviceProperties2(physical_device_, &props);
   pipeline_cache_ = std::make_unique<PipelineCache>(device_, props.properties.pipelineCacheUUID);
-
-  VkCommandPoolCreateInfo pool{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
-  pool.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-  pool.queueFamilyIndex = queue_family_;
-  vk_check(vkCreateCommandPool(device_, &pool, nullptr, &command_pool_), "vkCreateCommandPool");
-  VkFenceCreateInfo fence{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-  vk_check(vkCreateFence(device_, &fence, nullptr, &fence_), "vkCreateFence");
 }
 
 VulkanContext::~VulkanContext() {
   if (device_) {
     vkDeviceWaitIdle(device_);
     pipeline_cache_.reset();
-    vkDestroyFence(device_, fence_, nullptr);
-    vkDestroyCommandPool(device_, command_pool_, nullptr);
     vkDestroyDevice(device_, nullptr);
   }
   if (instance_) vkDestroyInstance(instance_, nullptr);
@@ -289,40 +281,54 @@ uint32_t VulkanContext::find_memory_type(uint32_t type_bits, VkMemoryPropertyFla
   throw VulkanError("no memory type with the wanted properties");
 }
 
-VkCommandBuffer VulkanContext::begin_one_shot() {
-  VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
-  alloc.commandPool = command_pool_;
-  alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-  alloc.commandBufferCount = 1;
-  VkCommandBuffer cmd = VK_NULL_HANDLE;
-  vk_check(vkAllocateCommandBuffers(device_, &alloc, &cmd), "vkAllocateCommandBuffers");
-  VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-  begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
-  vk_check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
-  return cmd;
+VulkanContext::OneShot::OneShot(VkDevice device, uint32_t queue_family) : device(device) {
+  VkCommandPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+  pool_info.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+  pool_info.queueFamilyIndex = queue_family;
+  vk_check(vkCreateCommandPool(device, &pool_info, nullptr, &pool), "vkCreateCommandPool");
+  try {
+    VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+    alloc.commandPool = pool;
+    alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    alloc.commandBufferCount = 1;
+    vk_check(vkAllocateCommandBuffers(device, &alloc, &cmd), "vkAllocateCommandBuffers");
+    VkFenceCreateInfo fence_info{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    vk_check(vkCreateFence(device, &fence_info, nullptr, &fence), "vkCreateFence");
+    VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    begin.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    vk_check(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
+  } catch (...) {
+    release();
+    throw;
+  }
 }
 
-void VulkanContext::end_one_shot(VkCommandBuffer cmd) {
-  struct FreeOnExit {  // on every way out, failures included
-    VulkanContext& ctx;
-    VkCommandBuffer cmd;
-    ~FreeOnExit() { vkFreeCommandBuffers(ctx.device_, ctx.command_pool_, 1, &cmd); }
-  } free_on_exit{*this, cmd};
+VulkanContext::OneShot::~OneShot() { release(); }
+
+// Destroying the pool frees its command buffer; null handles are ignored.
+void VulkanContext::OneShot::release() {
+  vkDestroyFence(device, fence, nullptr);
+  vkDestroyCommandPool(device, pool, nullptr);
+}
+
+void VulkanContext::submit(OneShot& shot) {
   // A lost device stays lost: the driver answers every later submission so.
   auto checked = [this](VkResult result, const char* what) {
     if (result == VK_ERROR_DEVICE_LOST) lost_ = true;
     vk_check(result, what);
   };
   if (lost_) checked(VK_ERROR_DEVICE_LOST, "vkQueueSubmit");
-  checked(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
-  VkSubmitInfo submit{VK_STRUCTURE_TYPE_SUBMIT_INFO};
-  submit.commandBufferCount = 1;
-  submit.pCommandBuffers = &cmd;
-  checked(vkResetFences(device_, 1, &fence_), "vkResetFences");
+  checked(vkEndCommandBuffer(shot.cmd), "vkEndCommandBuffer");
+  VkSubmitInfo info{VK_STRUCTURE_TYPE_SUBMIT_INFO};
+  info.commandBufferCount = 1;
+  info.pCommandBuffers = &shot.cmd;
   VkResult submitted = fault::next_submission();  // VK_SUCCESS unless a test injects a fault
-  if (submitted == VK_SUCCESS) submitted = vkQueueSubmit(queue_, 1, &submit, fence_);
+  if (submitted == VK_SUCCESS) {
+    std::lock_guard hold(queue_mutex_);
+    submitted = vkQueueSubmit(queue_, 1, &info, shot.fence);
+  }
   checked(submitted, "vkQueueSubmit");
-  checked(vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX), "vkWaitForFences");
+  checked(vkWaitForFences(device_, 1, &shot.fence, VK_TRUE, UINT64_MAX), "vkWaitForFences");
 }
 
 }  // namespace geodesic

@@ -1,9 +1,14 @@
 // The headless Vulkan device: instance, the chosen ray-tracing capable physical device, one
-// compute queue, and the extension entry points the loader does not export.
+// compute queue, and the extension entry points the loader does not export. Submissions may come
+// from several threads at once: each records into its own command pool and waits on its own
+// fence, and only the queue submission itself is serialised, so a renderer can be built (its
+// acceleration structures uploaded) while another renders.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -89,26 +94,36 @@ class VulkanContext {
   // objects may only be destroyed) and every later submission fails the same way.
   bool lost() const { return lost_; }
 
-  // Records commands into a fresh command buffer, submits and waits for completion.
+  // Records commands into a fresh command buffer, submits and waits for completion. Thread-safe.
   template <typename Record>
   void submit_and_wait(Record&& record) {
-    VkCommandBuffer cmd = begin_one_shot();
-    record(cmd);
-    end_one_shot(cmd);
+    OneShot shot(device_, queue_family_);
+    record(shot.cmd);
+    submit(shot);
   }
 
  private:
-  VkCommandBuffer begin_one_shot();
-  void end_one_shot(VkCommandBuffer cmd);
+  // A command buffer with its own transient pool and fence: one submission's, on any thread.
+  struct OneShot {
+    OneShot(VkDevice device, uint32_t queue_family);
+    ~OneShot();
+    OneShot(const OneShot&) = delete;
+    OneShot& operator=(const OneShot&) = delete;
+    void release();
+    VkDevice device;
+    VkCommandPool pool = VK_NULL_HANDLE;
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    VkFence fence = VK_NULL_HANDLE;
+  };
+  void submit(OneShot& shot);
 
   VkInstance instance_ = VK_NULL_HANDLE;
   VkPhysicalDevice physical_device_ = VK_NULL_HANDLE;
   VkDevice device_ = VK_NULL_HANDLE;
   VkQueue queue_ = VK_NULL_HANDLE;
   uint32_t queue_family_ = 0;
-  VkCommandPool command_pool_ = VK_NULL_HANDLE;
-  VkFence fence_ = VK_NULL_HANDLE;
-  bool lost_ = false;
+  std::mutex queue_mutex_;  // vkQueueSubmit: the queue is externally synchronised
+  std::atomic<bool> lost_{false};
   DeviceDescription description_;
   RayTracingFunctions rt_;
   VkPhysicalDeviceMemoryProperties memory_properties_{};

@@ -151,12 +151,15 @@ layout(set = 0, binding = 16, std430) readonly buffer LightImages { mat4 lightIm
 // one edge (scene/atlas_piece.h).
 #define MAX_WALL_CROSSINGS (1024u + 8u * MAX_CROSSINGS)
 
-// Which samples this dispatch adds, [sampleStart, sampleStart + sampleCount), to which rows:
-// the dispatch's y runs over [rowOffset, rowOffset + rowCount).
+// Which samples this dispatch adds, [sampleStart, sampleStart + sampleCount), to which pixels:
+// a rectangle of columnCount x rowCount from (columnOffset, rowOffset). SampleRange in
+// server/render/frame_uniforms.h.
 layout(push_constant) uniform Push {
   uint sampleStart;
   uint sampleCount;
+  uint columnOffset;
   uint rowOffset;
+  uint columnCount;
   uint rowCount;
 } push;
 

@@ -25,8 +25,9 @@ vec3 pixelSample(uvec2 pixel, inout uint rng) {
 // Adds push.sampleCount samples to the pixel's running sums (rgb) and counts (a), kept in two
 // halves, even- and odd-numbered samples: their difference estimates the remaining error.
 void accumulatePixel(uvec2 launch) {
-  uvec2 pixel = uvec2(launch.x, launch.y + push.rowOffset);
-  if (pixel.x >= frame.width || launch.y >= push.rowCount || pixel.y >= frame.height) return;
+  if (launch.x >= push.columnCount || launch.y >= push.rowCount) return;
+  uvec2 pixel = launch + uvec2(push.columnOffset, push.rowOffset);
+  if (pixel.x >= frame.width || pixel.y >= frame.height) return;
   uint index = pixel.y * frame.width + pixel.x;
   vec4 halves[2] = vec4[2](vec4(0.0), vec4(0.0));
   for (uint i = 0u; i < push.sampleCount; ++i) {

@@ -1,7 +1,9 @@
 // Progressive rendering as the daemon uses it: error estimates from the two halves, new views
-// and reduced resolutions.
+// and reduced resolutions, and passes cut into slices (render/pass_slicer.h).
 #include <cmath>
+#include <vector>
 
+#include "render/pass_slicer.h"
 #include "render/relative_error.h"
 #include "render_fixture.h"
 
@@ -46,6 +48,58 @@ TEST(Progressive, ANewViewStartsOverAtTheResolutionAsked) {
   renderer.add_samples(4);
   EXPECT_LT(rms_difference(renderer.image(), before), 0.2);  // same view, same picture
   EXPECT_THROW(renderer.set_view(pose, 64, 64), std::invalid_argument);
+}
+
+// A pass cut into slices adds the same samples to every pixel as one dispatch of the whole
+// image: each pixel's random stream depends on its index and sample number only.
+std::vector<float> sliced_pass(const Scene& scene, double slice_seconds, int& slices) {
+  Renderer renderer(device(), scene);
+  PassSlicer slicer(slice_seconds);
+  slices = 0;
+  for (bool done = false; !done; ++slices) done = slicer.render_slice(renderer);
+  EXPECT_EQ(renderer.samples(), 1u);
+  EXPECT_FALSE(slicer.in_pass());
+  const auto sums = renderer.accumulation();
+  return {sums.begin(), sums.end()};
+}
+
+TEST(Progressive, APassCutIntoSlicesOfPartRowsOrBandsAddsTheSameSamples) {
+  Scene scene = small_cornell();
+  scene.render.width = 20;  // not a multiple of the shader's 8 x 8 groups
+  scene.render.height = 12;
+  Renderer whole(device(), scene);
+  whole.add_samples(1);
+  const auto expected = whole.accumulation();
+
+  int slices = 0;
+  // A slice too short for any pixel: the first, before the cost is known, has kFirstPixels
+  // (whole rows: 3 x 20); then one pixel per slice, parts of rows.
+  const auto by_pixel = sliced_pass(scene, 1e-12, slices);
+  EXPECT_EQ(slices, 1 + 20 * 12 - 60);
+  EXPECT_TRUE(std::equal(expected.begin(), expected.end(), by_pixel.begin()));
+  // A long slice: the first has kFirstPixels, the second the rest (at most kMaxGrowth times).
+  const auto at_once = sliced_pass(scene, 10, slices);
+  EXPECT_EQ(slices, 2);
+  EXPECT_TRUE(std::equal(expected.begin(), expected.end(), at_once.begin()));
+}
+
+TEST(Progressive, SlicesGrowFromTheMeasuredCostAndThePassDoublesItsBatchWhenItFits) {
+  Scene scene = small_cornell();
+  scene.render.width = scene.render.height = 64;
+  Renderer renderer(device(), scene);
+  PassSlicer slicer(10);
+  int slices = 1;
+  while (!slicer.render_slice(renderer)) ++slices;
+  // kFirstPixels, then each slice kMaxGrowth times the last: 64 + 256 + 1024 + 2752.
+  EXPECT_EQ(slices, 4);
+  EXPECT_EQ(slicer.batch(), 1u);  // a pass of several slices keeps its batch
+  EXPECT_TRUE(slicer.render_slice(renderer));  // now the whole image fits a slice
+  EXPECT_EQ(slicer.batch(), 2u);
+  EXPECT_TRUE(slicer.render_slice(renderer));
+  EXPECT_EQ(renderer.samples(), 1u + 1u + 2u);
+  slicer.limit_batch(3);
+  EXPECT_EQ(slicer.batch(), 3u);
+  EXPECT_GT(slicer.seconds_per_pixel_sample(), 0);
 }
 
 }  // namespace

@@ -1,0 +1,92 @@
+#include "render/render_session.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace geodesic {
+namespace {
+
+using Clock = RenderSession::Clock;
+
+// After a move, frames are rendered at reduced resolution until the camera has been still this
+// long (fast feedback while walking, full quality when still), as Cycles' viewport does: the
+// divisor is chosen from the measured cost so that one sample of the frame takes about
+// kMovingFrameSeconds.
+constexpr double kSettleSeconds = 0.25;
+constexpr double kMovingFrameSeconds = 0.03;
+constexpr int kMaxMovingDivisor = 8;
+
+double seconds_since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+}  // namespace
+
+void RenderSession::adopt(PreparedScene prepared) {
+  renderer = std::move(prepared.renderer);
+  non_finite = truncated = scene_non_finite = scene_truncated = 0;
+  scene = std::move(prepared.scene);
+  scene_name = std::move(prepared.name);
+  width = scene.render.width;
+  height = scene.render.height;
+  pose = scene.camera.pose;
+  slicer.reset();
+  restart(false);
+}
+
+void RenderSession::restart(bool now_moving) {
+  moving = now_moving;
+  int divisor = 1;
+  if (moving) {
+    const double full_sample = slicer.seconds_per_pixel_sample() * width * height;
+    divisor = std::clamp(int(std::ceil(std::sqrt(full_sample / kMovingFrameSeconds))), 2,
+                         kMaxMovingDivisor);
+  }
+  const int w = std::max(16, width / divisor);
+  const int h = std::max(16, height / divisor);
+  // Moving frames also trace at most one bounce: direct light shows the shapes, and the
+  // indirect light comes back once the camera is still.
+  renderer->set_max_depth(moving ? std::min(1, scene.render.max_depth) : scene.render.max_depth);
+  pose = renderer->set_view(pose, w, h);
+  truncated = 0;  // set_view clears the tracer's counters, all but the non-finite one
+  reset_time = Clock::now();
+  slicer.restart();
+}
+
+std::shared_ptr<EncodedFrame> RenderSession::serve(JpegEncoder& encoder, ServiceStats& stats,
+                                                   double& pixel_samples) {
+  if (moving && seconds_since(last_move) > kSettleSeconds) restart(false);
+  const bool pass_done = slicer.render_slice(*renderer);
+  pixel_samples += slicer.last_pixel_samples();
+  if (!pass_done) return nullptr;
+
+  const auto encode_start = Clock::now();
+  auto encoded = std::make_shared<EncodedFrame>();
+  encoded->jpeg = encoder.encode(renderer->image());
+  stats.encode_seconds_sum += seconds_since(encode_start);
+  ++stats.encode_count;
+  ++stats.frames;
+  // A counter below the last one added belongs to a new renderer (after a device loss).
+  const uint64_t now_non_finite = renderer->non_finite_samples();
+  const uint64_t now_truncated = renderer->trace_counters().truncated_rays;
+  const uint64_t new_non_finite =
+      now_non_finite >= non_finite ? now_non_finite - non_finite : now_non_finite;
+  const uint64_t new_truncated = now_truncated >= truncated ? now_truncated - truncated : now_truncated;
+  non_finite = now_non_finite;
+  truncated = now_truncated;
+  scene_non_finite += new_non_finite;
+  scene_truncated += new_truncated;
+  stats.non_finite_samples += new_non_finite;
+  stats.truncated_geodesics += new_truncated;
+  encoded->info = {++frame, renderer->samples(), seconds_since(reset_time),
+                   renderer->estimated_error(), renderer->width(), renderer->height(),
+                   moving, pose, scene_non_finite, scene_truncated};
+  return encoded;
+}
+
+SceneInfo RenderSession::info() const {
+  return {scene_name, geometry_name(scene.geometry), scene.manifold.name, width, height,
+          scene.render.max_depth};
+}
+
+}  // namespace geodesic
