@@ -185,8 +185,10 @@ TEST(JobsDurability, AResultTooLargeForTheDiskFailsItsJobAndNothingElse) {
 
 // A full disk for real: a 3 MiB tmpfs as the data directory (mounting one needs root; the test
 // is skipped without). A 1920x1080 EXR result (about 25 MB) does not fit: its job fails naming
-// ENOSPC, and the jobs before and after it are done.
-TEST(JobsDurability, AFullDiskFailsTheJobWhoseResultDoesNotFit) {
+// ENOSPC, and the jobs before and after it are done. Then a file fills the disk: a submission
+// is answered 503 JSON with Retry-After (the store could not write it), the stored jobs stay
+// listed, and once space is back a submission is stored and done.
+TEST(JobsDurability, AFullDiskFailsTheJobWhoseResultDoesNotFitAndRefusesSubmissionsWith503) {
   TempDir data;
   const fs::path disk = data.path() / "disk";
   fs::create_directories(disk);
@@ -214,6 +216,24 @@ TEST(JobsDurability, AFullDiskFailsTheJobWhoseResultDoesNotFit) {
   EXPECT_TRUE(fs::exists(dir / "jobs" / std::to_string(before) / "result.png"));
   for (const auto& entry : fs::recursive_directory_iterator(dir))
     EXPECT_EQ(entry.path().string().find(".partial"), std::string::npos) << entry.path();
+
+  const fs::path filler = disk / "filler";
+  {
+    std::ofstream fill(filler, std::ios::binary);
+    const std::string block(64 * 1024, '\0');
+    while (fill.write(block.data(), block.size())) {}
+  }
+  const auto refused = http_request(daemon.port(), http::verb::post, "/api/jobs", kShortJob.dump());
+  EXPECT_EQ(refused.result_int(), 503u) << refused.body();
+  EXPECT_EQ(refused[http::field::content_type], "application/json");
+  EXPECT_EQ(refused[http::field::retry_after], "60");
+  const std::string error = json::parse(refused.body()).value("error", "");
+  EXPECT_TRUE(error.starts_with("store: the job was not stored: ")) << error;
+  EXPECT_EQ(error.find(dir.string()), std::string::npos) << "a server path: " << error;
+  std::printf("full disk, POST: %u %s\n", refused.result_int(), error.c_str());
+  EXPECT_EQ(api.get("/api/jobs").json["jobs"].size(), 3u);
+  fs::remove(filler);
+  EXPECT_EQ(api.wait_for(api.submit(kShortJob), job_ended)["state"], "done");
 }
 
 // GEODESIC_FAULT makes the daemon's 60th queue submission fail as a driver would; with no
