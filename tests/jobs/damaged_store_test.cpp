@@ -58,7 +58,7 @@ TEST(DamagedStore, RandomlyDamagedRowsReadAsFailedJobsAndTheRestStayListed) {
   std::mt19937 random(20261123);
   const char* kColumns[] = {"state", "request", "series", "created", "message", "samples",
                             "elapsed", "progress", "non_finite_samples", "truncated_geodesics"};
-  for (int round = 0; round < 150; ++round) {
+  for (int round = 0; round < 200; ++round) {
     TempDir dir;
     const fs::path file = dir.path() / "jobs.sqlite3";
     jobs::JobStore store(file);
@@ -123,7 +123,7 @@ TEST(DamagedStore, RandomlyDamagedCheckpointsNeverResumeIntoAnotherJob) {
   std::vector<float> sums(2 * 16 * 16 * 4);
   for (std::size_t i = 0; i < sums.size(); ++i) sums[i] = float(i);
   int refused = 0, read_back = 0;
-  for (int round = 0; round < 150; ++round) {
+  for (int round = 0; round < 200; ++round) {
     TempDir dir;
     const fs::path file = dir.path() / "checkpoint.bin";
     jobs::write_checkpoint(file, mine, 8, 1.5, 16, 16, sums);
