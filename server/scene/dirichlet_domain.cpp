@@ -21,6 +21,12 @@ constexpr double kMaxSphericalCircumradius = 1.45;
 // E3 and H3 spaces are infinite groups: the search radius grows to twice the circumradius,
 // but gives up after this many doublings of the generators' displacement.
 constexpr int kMaxGrowth = 12;
+// In H3 the search radius stops here: the products of isometries reaching further lose so much
+// double precision that two words for one element no longer agree (the powers of a single
+// translation by 1 stop matching beyond distance 10, and the group then looked as if it fixed
+// a point). Every H3 space of the catalogue and of Curved Spaces closes its cell well within it
+// (CurvedSpacesFiles.*), so a cell still open here is an unbounded domain.
+constexpr double kHyperbolicReach = 8;
 // Planes of a cell still unbounded after this many are not closing it (make_polyhedron is
 // quartic in the plane count; the scene format allows 64 faces).
 constexpr std::size_t kMaxCuts = 64;
@@ -153,7 +159,14 @@ Attempt attempt(GeometryKind kind, const std::vector<Mat4>& generators, const Ve
     const double needed = 2 * cell.circumradius;
     if (orbit->complete() || (cell.polyhedron.bounded && needed <= radius)) break;
     if (growth == kMaxGrowth) break;
+    if (kind == GeometryKind::Hyperbolic && radius >= kHyperbolicReach) {
+      if (!cell.polyhedron.bounded)
+        fail_unbounded(kind, "the cell was still open at distance " +
+                                 std::to_string(int(kHyperbolicReach)) + " from the base point");
+      break;
+    }
     radius = std::isfinite(needed) ? std::max(needed * 1.01, radius * 1.25) : radius * 2;
+    if (kind == GeometryKind::Hyperbolic) radius = std::min(radius, kHyperbolicReach);
   }
   a.domain.elements = orbit->elements().size();
   a.domain.finite = orbit->complete();

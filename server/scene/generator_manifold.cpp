@@ -1,5 +1,8 @@
 #include "scene/generator_manifold.h"
 
+#include <algorithm>
+#include <cstdio>
+
 #include "scene/catalogue.h"
 #include "scene/generator_file.h"
 
@@ -24,6 +27,20 @@ GeneratorSet read_set(const JsonNode& node, const DocumentFiles& files) {
   std::vector<Mat4> generators;
   for (std::size_t i = 0; i < n; ++i) generators.push_back(read_matrix((*matrices)[i]));
   return generator_set(generators, matrices->path());  // its errors name the field
+}
+
+// Below this relative isometry error, matrices are exact to double round-off.
+constexpr double kExactIsometry = 1e-12;
+
+// The largest isometry error of the matrices, relative to their size as the parser bounds it.
+double inexactness(GeometryKind kind, const std::vector<Mat4>& generators) {
+  double worst = 0;
+  for (const Mat4& g : generators) {
+    const double size = std::max(1.0, g.max_abs());
+    worst = std::max(worst, model::isometry_error(kind, g) /
+                                (kind == GeometryKind::Euclidean ? 1 : size * size));
+  }
+  return worst;
 }
 
 }  // namespace
@@ -52,7 +69,18 @@ DirichletDomain read_generator_manifold(const JsonNode& node, const std::string&
   try {
     return dirichlet_domain(kind, set.generators, options);
   } catch (const SceneError& e) {
-    node.fail(e.what());
+    // Matrices accepted as isometries within the parser's tolerance are snapped to exact
+    // ones, but the group they generate may no longer be the one meant (a 1e-7 shear of
+    // Seifert-Weber's generators breaks its relations): say so when that may be the cause.
+    std::string message = e.what();
+    if (const double off = inexactness(kind, set.generators); off > kExactIsometry) {
+      char figure[32];
+      std::snprintf(figure, sizeof figure, "%.1e", off);
+      message += "; note: the matrices are isometries only to " + std::string(figure) +
+                 " (relative), and entries rounded or perturbed that much can generate another "
+                 "group than the one meant: give them to more digits";
+    }
+    node.fail(message);
   }
 }
 

@@ -230,6 +230,22 @@ TEST(DirichletDomain, NonCompactAndEmptyInputs) {
     EXPECT_NE(std::string(e.what()).find("spanning only a plane"), std::string::npos) << e.what();
     EXPECT_EQ(std::string(e.what()).find("not discrete"), std::string::npos) << e.what();
   }
+  // One hyperbolic translation, and two along one axis: discrete, not cocompact (the cell is a
+  // slab); they used to say "fixed by a group element: not discrete", once products far out
+  // lost precision and two words for one power stopped agreeing.
+  const Mat4 boost = model::translation(GeometryKind::Hyperbolic, {1, 0, 0});
+  const Mat4 longer = model::translation(GeometryKind::Hyperbolic, {2.5, 0, 0});
+  for (const auto& generators : {std::vector<Mat4>{boost}, std::vector<Mat4>{boost, longer}}) {
+    try {
+      dirichlet_domain(GeometryKind::Hyperbolic, generators);
+      FAIL() << "hyperbolic translations along one axis leave the domain unbounded";
+    } catch (const SceneError& e) {
+      EXPECT_NE(std::string(e.what()).find("hyperbolic space by these generators is not compact"),
+                std::string::npos)
+          << e.what();
+      EXPECT_EQ(std::string(e.what()).find("not discrete"), std::string::npos) << e.what();
+    }
+  }
 }
 
 // Curved Spaces' files: every one parses and gives a valid domain whose volume matches the

@@ -87,6 +87,24 @@ TEST(GeneratorManifold, ErrorsNameTheField) {
             std::string::npos);
 }
 
+// Seifert-Weber's generators with one entry off by 1e-7: still isometries within the parser's
+// tolerance (files carry 6 to 20 digits), but no longer the group meant. The error says what
+// the enumeration found and that the matrices are inexact, not only "not compact".
+TEST(GeneratorManifold, ANearIsometryThatBreaksTheGroupIsNamedAsTheLikelyCause) {
+  const std::vector<Mat4> exact = find_catalogue_entry("seifert-weber")->generators;
+  const std::string fine = nlohmann::json(format_gen(exact, "#\tSeifert-Weber")).dump();
+  EXPECT_EQ(error_of("hyperbolic", R"({"type": "generators", "text": )" + fine + "}"), "(no error)");
+  std::vector<Mat4> sheared = exact;
+  sheared[0].m[0][1] += 1e-7;
+  const std::string text = nlohmann::json(format_gen(sheared, "#\tSheared")).dump();
+  const std::string error = error_of("hyperbolic", R"({"type": "generators", "text": )" + text + "}");
+  EXPECT_TRUE(error.starts_with("manifold: generators: ")) << error;
+  EXPECT_NE(error.find("note: the matrices are isometries only to "), std::string::npos) << error;
+  EXPECT_NE(error.find("can generate another group than the one meant: give them to more digits"),
+            std::string::npos)
+      << error;
+}
+
 // The default scene: the camera at the base point, three spheres, a light and the domain's
 // edges, all inside the domain (the loader checks), for a space of each geometry.
 TEST(DefaultScene, FitsTheDomainOfEachGeometry) {
