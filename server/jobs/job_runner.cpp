@@ -186,13 +186,18 @@ void JobRunner::render() {
       release();
       return save(JobState::Cancelled);
     }
-    if (!slicer.in_pass() && stop.spp)  // the last pass ends exactly at the spp asked for
+    // The last pass ends exactly at the spp asked for; a checkpoint that holds them all needs
+    // no pass.
+    const bool all_there = stop.spp && renderer->samples() >= *stop.spp;
+    if (!slicer.in_pass() && stop.spp && !all_there)
       slicer.limit_batch(*stop.spp - renderer->samples());
-    bool pass_done = false;
-    const bool had_turn =
-        service_.run_background([&](VulkanContext&) { pass_done = slicer.render_slice(*renderer); });
-    if (!had_turn) break;  // the service is stopping
-    if (!pass_done) continue;
+    bool pass_done = all_there && !slicer.in_pass();
+    if (!pass_done) {
+      const bool had_turn = service_.run_background(
+          [&](VulkanContext&) { pass_done = slicer.render_slice(*renderer); });
+      if (!had_turn) break;  // the service is stopping
+      if (!pass_done) continue;
+    }
 
     // Between passes the accumulation is this thread's alone: no device turn needed to read it.
     now = {elapsed_before + seconds_since(started), renderer->samples(),
