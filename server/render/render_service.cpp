@@ -60,6 +60,8 @@ struct RenderService::Impl {
   // a move, a new scene or /metrics waits at most one slice.
   mutable std::atomic<int> waiting{0};
   std::condition_variable wake;
+  // Notified when the render thread has replaced a lost device.
+  mutable std::condition_variable replaced;
   // Background callers (run_background) wait in arrival order for a turn; `granted` is the
   // ticket holding the device, 0 when the render thread has it.
   std::condition_variable background_turn;
@@ -101,6 +103,7 @@ struct RenderService::Impl {
     }
     wake.notify_all();
     background_turn.notify_all();
+    replaced.notify_all();
     thread.join();
     std::unique_lock lock(mutex);
     beside_done.wait(lock, [this] { return beside == 0; });
@@ -191,6 +194,7 @@ struct RenderService::Impl {
     }
     for (auto& [id, s] : sessions) s->renderer.reset();
     lost_devices.push_back(std::exchange(ctx, std::move(fresh)));
+    replaced.notify_all();
     std::fprintf(stderr, "geodesic: Vulkan device lost; rendering on a new %s device\n",
                  ctx->description().name.c_str());
     std::vector<std::pair<SessionId, std::string>> failed;
@@ -441,6 +445,13 @@ bool RenderService::run_beside(const std::function<void(VulkanContext&)>& work) 
   VulkanContext* device = nullptr;
   {
     auto lock = impl.lock();
+    // A lost device is replaced by the render thread: build on its successor (a while for one
+    // to be made; then on the lost one, whose submissions fail with the reason).
+    if (impl.ctx->lost()) {
+      impl.wake.notify_all();
+      impl.replaced.wait_for(lock, 2 * kDeviceRetry,
+                             [&] { return impl.stopping || !impl.ctx->lost(); });
+    }
     if (impl.stopping) return false;
     device = impl.ctx.get();  // stays valid: lost devices are kept until the service ends
     ++impl.beside;
