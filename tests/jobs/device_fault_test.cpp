@@ -21,6 +21,7 @@ struct SessionEnd {
   std::string error;  // the `error` message's text, if one came
   Clock::time_point error_at;
   uint16_t close_code = 0;
+  std::string close_failure;  // why no close code came, if none did
   std::vector<Clock::time_point> frames;
 };
 
@@ -35,7 +36,11 @@ void follow(WsClient& ws, Clock::time_point deadline, SessionEnd& end) {
       } else if (message.json["type"] == "error") {
         end.error = message.json["message"];
         end.error_at = Clock::now();
-        end.close_code = ws.read_until_close();
+        try {
+          end.close_code = ws.read_until_close();
+        } catch (const std::exception& e) {
+          end.close_failure = e.what();
+        }
         return;
       }
     }
@@ -67,7 +72,7 @@ void one_session_fails(const std::string& fault, const std::string& vulkan_error
     if (!end.error.empty()) {
       ++failed;
       EXPECT_NE(end.error.find(vulkan_error), std::string::npos) << end.error;
-      EXPECT_EQ(end.close_code, 1011);
+      EXPECT_EQ(end.close_code, 1011) << end.close_failure << "\n" << daemon.log();
       failure_seen = end.error_at;
     }
   ASSERT_EQ(failed, 1) << daemon.log();
