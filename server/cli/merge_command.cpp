@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "render/accumulation_file.h"
+#include "render/exposure.h"
 #include "render/image_io.h"
 
 namespace geodesic {
@@ -18,6 +19,7 @@ namespace geodesic {
 int merge_command(int argc, char** argv) {
   std::vector<std::string> inputs;
   std::string output, accumulation, report;
+  Exposure exposure;
   for (int i = 0; i < argc; ++i) {
     const std::string flag = argv[i];
     auto value = [&]() -> std::string {
@@ -27,6 +29,13 @@ int merge_command(int argc, char** argv) {
     if (flag == "-o" || flag == "--output") output = value();
     else if (flag == "--accumulation") accumulation = value();
     else if (flag == "--report") report = value();
+    else if (flag == "--exposure") {
+      try {
+        exposure = parse_exposure(value());
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("--exposure: " + std::string(e.what()));
+      }
+    }
     else if (!flag.empty() && flag[0] == '-') throw std::invalid_argument("unknown option " + flag);
     else inputs.push_back(flag);
   }
@@ -39,7 +48,10 @@ int merge_command(int argc, char** argv) {
   for (const std::string& input : inputs) parts.push_back(read_accumulation(input));
   const Accumulation merged = merge_accumulations(parts);
   const double error = merged.estimated_error();
-  if (!output.empty()) write_image(output, merged.image());
+  if (!output.empty()) {
+    const Image image = merged.image();
+    write_image(output, image, exposure_scale(exposure_stops(exposure, image)));
+  }
   if (!accumulation.empty()) write_accumulation(accumulation, merged);
   std::printf("%s: %zu parts, %u spp at %dx%d, estimated error %.6f\n",
               (output.empty() ? accumulation : output).c_str(), parts.size(), merged.samples,

@@ -11,6 +11,7 @@
 #include "cli/render_report.h"
 #include "render/accumulation_file.h"
 #include "render/convergence.h"
+#include "render/exposure.h"
 #include "render/image_io.h"
 #include "render/pipeline_cache.h"
 #include "render/renderer.h"
@@ -25,6 +26,7 @@ struct RenderArgs {
   std::string scene, generators, output, device, backend = "auto", lighting;
   std::optional<int> spp, width, height, max_depth;
   std::optional<uint64_t> seed;
+  std::optional<Exposure> exposure;  // the scene's render.exposure when not given
   // A part of a sample-parallel render: sample indices from --samples-from, the accumulation
   // written to --accumulation (geodesic merge sums the parts).
   uint32_t samples_from = 0;
@@ -106,6 +108,13 @@ RenderArgs parse(int argc, char** argv) {
                                     v + "\"");
       a.variant = v == "specialised" ? PipelineVariant::Specialised : PipelineVariant::AllFeatures;
     }
+    else if (flag == "--exposure") {
+      try {
+        a.exposure = parse_exposure(value());
+      } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument("--exposure: " + std::string(e.what()));
+      }
+    }
     else if (flag == "--lighting") {
       a.lighting = value();
       if (a.lighting != "physical" && a.lighting != "paper")
@@ -150,6 +159,7 @@ int render_command(int argc, char** argv) {
   if (args.height) scene.render.height = *args.height;
   if (args.max_depth) scene.render.max_depth = *args.max_depth;
   if (args.seed) scene.render.seed = *args.seed;
+  if (args.exposure) scene.render.exposure = *args.exposure;
   if (!args.lighting.empty()) {
     // The model's own Russian-roulette default comes with it.
     scene.render.lighting = args.lighting == "paper" ? LightingModel::Paper : LightingModel::Physical;
@@ -205,7 +215,14 @@ int render_command(int argc, char** argv) {
   const double seconds = elapsed();
   bar.finish();
   const uint32_t rendered = renderer.samples() - first;
-  if (!args.output.empty()) write_image(args.output, renderer.image());
+  if (!args.output.empty()) {
+    const Image image = renderer.image();
+    const double stops = exposure_stops(scene.render.exposure, image);
+    write_image(args.output, image, exposure_scale(stops));
+    if (stops != 0)
+      std::printf("%s: exposure %+.2f stops%s\n", args.output.c_str(), stops,
+                  scene.render.exposure.automatic ? " (auto)" : "");
+  }
   if (!args.accumulation.empty()) {
     const auto sums = renderer.accumulation();
     write_accumulation(args.accumulation,

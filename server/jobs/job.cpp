@@ -5,6 +5,7 @@
 #include <set>
 
 #include "scene/default_scene.h"
+#include "scene/render_settings_loader.h"
 
 namespace geodesic::jobs {
 namespace {
@@ -97,6 +98,7 @@ Json JobRequest::to_json() const {
   json["width"] = width;
   json["height"] = height;
   if (max_depth) json["max_depth"] = *max_depth;
+  if (exposure) json["exposure"] = exposure_to_json(*exposure);
   if (stop.spp) json["spp"] = *stop.spp;
   if (stop.seconds) json["seconds"] = *stop.seconds;
   if (stop.target_error) json["target_error"] = *stop.target_error;
@@ -108,7 +110,7 @@ ValidatedJob validate_job(const Json& body, const RenderService& service) {
   if (!body.is_object()) fail("body", "must be a JSON object");
   static const std::set<std::string> known = {"scene", "generators", "camera", "width", "height",
                                               "max_depth", "spp", "seconds", "target_error",
-                                              "formats"};
+                                              "formats", "exposure"};
   for (const auto& item : body.items())
     if (!known.contains(item.key())) fail(item.key(), "unknown field");
   if (body.contains("scene") == body.contains("generators"))
@@ -138,6 +140,13 @@ ValidatedJob validate_job(const Json& body, const RenderService& service) {
   if (r.width > limits.max_width) fail("width", "the scene's width is over this server's limit");
   if (r.height > limits.max_height) fail("height", "the scene's height is over this server's limit");
   if (present("max_depth")) r.max_depth = integer_in(body, "max_depth", 0, limits.max_depth);
+  if (present("exposure")) {
+    try {
+      r.exposure = exposure_from_json(body["exposure"]);
+    } catch (const std::invalid_argument& e) {
+      fail("exposure", e.what());
+    }
+  }
   if (present("camera")) {
     // Checked as a scene's "pose" is: an isometry of the scene's space, within round-off.
     const Mat4 camera = parse_camera(body["camera"]);
@@ -159,6 +168,7 @@ ValidatedJob validate_job(const Json& body, const RenderService& service) {
   job.scene.render.width = r.width;
   job.scene.render.height = r.height;
   if (r.max_depth) job.scene.render.max_depth = *r.max_depth;
+  if (r.exposure) job.scene.render.exposure = *r.exposure;
   if (r.camera) job.scene.camera.pose = *r.camera;
   return job;
 }

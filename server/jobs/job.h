@@ -35,6 +35,7 @@ struct JobRequest {
   std::optional<Mat4> camera;    // the camera isometry, as `frame` messages give it
   int width = 0, height = 0;
   std::optional<int> max_depth;
+  std::optional<Exposure> exposure;  // of the PNG and JPEG results; the scene's when absent
   StopCondition stop;            // exactly one field set
   std::vector<std::string> formats;  // of "exr", "png", "jpg"
 

@@ -8,6 +8,7 @@
 
 #include "jobs/checkpoint.h"
 #include "jobs/durable_file.h"
+#include "render/exposure.h"
 #include "render/image_io.h"
 #include "render/pass_slicer.h"
 #include "render/renderer.h"
@@ -224,10 +225,11 @@ void JobRunner::render() {
     service_.count_background(new_non_finite, new_truncated);
     if (reached) {
       const Image image = renderer->image();
+      const float scale = exposure_scale(exposure_stops(job.scene.render.exposure, image));
       release();
       for (const std::string& format : job.request.formats)
         write_durably(dir_ / ("result." + format), [&](const std::filesystem::path& file) {
-          write_image(file, image);
+          write_image(file, image, scale);
           // libpng (through OpenImageIO) does not report a short write on a full disk.
           const Image written = read_image(file);
           if (written.width != image.width || written.height != image.height)

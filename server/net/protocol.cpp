@@ -4,6 +4,8 @@
 #include <initializer_list>
 #include <utility>
 
+#include "scene/render_settings_loader.h"
+
 namespace geodesic::net {
 namespace {
 
@@ -89,12 +91,19 @@ CameraMotion parse_move(const Json& message) {
 }
 
 SessionSettings parse_settings(const Json& message, const ServiceLimits& limits) {
-  reject_unknown_fields(message, {"width", "height", "max_depth"});
+  reject_unknown_fields(message, {"width", "height", "max_depth", "exposure"});
   SessionSettings s;
   if (message.contains("width")) s.width = integer_in(message, "width", 16, limits.max_width);
   if (message.contains("height")) s.height = integer_in(message, "height", 16, limits.max_height);
   if (message.contains("max_depth"))
     s.max_depth = integer_in(message, "max_depth", 0, limits.max_depth);
+  if (message.contains("exposure")) {
+    try {
+      s.exposure = exposure_from_json(message["exposure"]);
+    } catch (const std::invalid_argument& e) {
+      throw ProtocolError("exposure", e.what());
+    }
+  }
   return s;
 }
 
@@ -164,7 +173,8 @@ std::string scene_message(const SceneInfo& scene) {
                    {"manifold", scene.manifold},
                    {"width", scene.width},
                    {"height", scene.height},
-                   {"max_depth", scene.max_depth}});
+                   {"max_depth", scene.max_depth},
+                   {"exposure", exposure_to_json(scene.exposure)}});
 }
 
 std::string frame_message(const FrameInfo& frame) {
@@ -179,6 +189,7 @@ std::string frame_message(const FrameInfo& frame) {
                    {"width", frame.width},
                    {"height", frame.height},
                    {"moving", frame.moving},
+                   {"exposure", frame.exposure},
                    {"non_finite_samples", frame.non_finite_samples},
                    {"truncated_geodesics", frame.truncated_geodesics},
                    {"camera", std::move(camera)}});

@@ -37,7 +37,7 @@ void check_output_format(const std::filesystem::path& path) {
                              "\" (use .exr, .png or .jpg)");
 }
 
-void write_image(const std::filesystem::path& path, const Image& image) {
+void write_image(const std::filesystem::path& path, const Image& image, float scale) {
   check_output_format(path);
   const std::string ext = lower_extension(path);
   const bool linear = ext == ".exr";
@@ -56,7 +56,8 @@ void write_image(const std::filesystem::path& path, const Image& image) {
     ok = out->write_image(OIIO::TypeDesc::FLOAT, image.rgb.data());
   } else {
     std::vector<uint8_t> bytes(image.rgb.size());
-    std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(), to_srgb8);
+    std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(),
+                   [scale](float v) { return to_srgb8(v * scale); });
     ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
   }
   if (!ok || !out->close()) throw std::runtime_error(path.string() + ": " + out->geterror());

@@ -14,9 +14,10 @@ JpegEncoder::JpegEncoder() : handle_(tjInitCompress()) {
 
 JpegEncoder::~JpegEncoder() { tjDestroy(handle_); }
 
-std::vector<unsigned char> JpegEncoder::encode(const Image& image, int quality) {
+std::vector<unsigned char> JpegEncoder::encode(const Image& image, int quality, float scale) {
   rgb_.resize(image.rgb.size());
-  std::transform(image.rgb.begin(), image.rgb.end(), rgb_.begin(), to_srgb8);
+  std::transform(image.rgb.begin(), image.rgb.end(), rgb_.begin(),
+                 [scale](float v) { return to_srgb8(v * scale); });
   unsigned char* jpeg = nullptr;
   unsigned long size = 0;
   if (tjCompress2(handle_, rgb_.data(), image.width, 0, image.height, TJPF_RGB, &jpeg, &size,

@@ -14,8 +14,9 @@ class JpegEncoder {
   JpegEncoder(const JpegEncoder&) = delete;
   JpegEncoder& operator=(const JpegEncoder&) = delete;
 
-  // Tone-maps (sRGB, clamped) and encodes; quality 1-100. Throws std::runtime_error.
-  std::vector<unsigned char> encode(const Image& image, int quality = 85);
+  // Scales (the exposure, render/exposure.h), tone-maps (sRGB, clamped) and encodes; quality
+  // 1-100. Throws std::runtime_error.
+  std::vector<unsigned char> encode(const Image& image, int quality = 85, float scale = 1);
 
  private:
   void* handle_;

@@ -380,7 +380,9 @@ SceneInfo RenderService::apply_settings(SessionId id, const SessionSettings& set
     s.scene.render.max_depth = settings.max_depth;
     s.renderer->set_max_depth(settings.max_depth);
   }
-  s.restart(false);
+  if (settings.exposure) s.set_exposure(*settings.exposure);
+  const bool view_changed = settings.width || settings.height || settings.max_depth != -1;
+  if (view_changed || !settings.exposure) s.restart(false);
   return s.info();
 }
 

@@ -29,6 +29,7 @@ struct FrameInfo {
   double error = -1;      // estimated relative RMS error; < 0 while unknown
   int width = 0, height = 0;
   bool moving = false;    // reduced resolution right after a move
+  double exposure = 0;    // the stops applied (the automatic exposure's, when automatic)
   Mat4 camera;            // the camera isometry
   // Since the session's scene was loaded: samples dropped as NaN/Inf, and geodesics cut off at
   // the scene's max_crossings (they return black: docs/light-transport.md).
@@ -43,11 +44,14 @@ struct EncodedFrame {
 struct SceneInfo {
   std::string name, geometry, manifold;
   int width = 0, height = 0, max_depth = 0;
+  Exposure exposure;
 };
 
-// Absent fields keep their value.
+// Absent fields keep their value. A new exposure alone keeps the accumulation: the last frame
+// comes again at once with it.
 struct SessionSettings {
   int width = 0, height = 0, max_depth = -1;
+  std::optional<Exposure> exposure;
 };
 
 struct ServiceStats {

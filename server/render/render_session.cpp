@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "render/exposure.h"
+
 namespace geodesic {
 namespace {
 
@@ -31,6 +33,8 @@ void RenderSession::adopt(PreparedScene prepared) {
   height = scene.render.height;
   pose = scene.camera.pose;
   slicer.reset();
+  last_image = {};
+  reexpose = false;
   restart(false);
 }
 
@@ -51,21 +55,20 @@ void RenderSession::restart(bool now_moving) {
   truncated = 0;  // set_view clears the tracer's counters, all but the non-finite one
   reset_time = Clock::now();
   slicer.restart();
+  last_image = {};  // of the old view
 }
 
 std::shared_ptr<EncodedFrame> RenderSession::serve(JpegEncoder& encoder, ServiceStats& stats,
                                                    double& pixel_samples) {
+  if (reexpose) {
+    reexpose = false;
+    if (!last_image.rgb.empty()) return encode(encoder, stats);
+  }
   if (moving && seconds_since(last_move) > kSettleSeconds) restart(false);
   const bool pass_done = slicer.render_slice(*renderer);
   pixel_samples += slicer.last_pixel_samples();
   if (!pass_done) return nullptr;
 
-  const auto encode_start = Clock::now();
-  auto encoded = std::make_shared<EncodedFrame>();
-  encoded->jpeg = encoder.encode(renderer->image());
-  stats.encode_seconds_sum += seconds_since(encode_start);
-  ++stats.encode_count;
-  ++stats.frames;
   // A counter below the last one added belongs to a new renderer (after a device loss).
   const uint64_t now_non_finite = renderer->non_finite_samples();
   const uint64_t now_truncated = renderer->trace_counters().truncated_rays;
@@ -78,15 +81,34 @@ std::shared_ptr<EncodedFrame> RenderSession::serve(JpegEncoder& encoder, Service
   scene_truncated += new_truncated;
   stats.non_finite_samples += new_non_finite;
   stats.truncated_geodesics += new_truncated;
-  encoded->info = {++frame, renderer->samples(), seconds_since(reset_time),
-                   renderer->estimated_error(), renderer->width(), renderer->height(),
-                   moving, pose, scene_non_finite, scene_truncated};
+  last_image = renderer->image();
+  last_info = {0, renderer->samples(), seconds_since(reset_time), renderer->estimated_error(),
+               renderer->width(), renderer->height(), moving, 0, pose, scene_non_finite,
+               scene_truncated};
+  return encode(encoder, stats);
+}
+
+std::shared_ptr<EncodedFrame> RenderSession::encode(JpegEncoder& encoder, ServiceStats& stats) {
+  const auto encode_start = Clock::now();
+  auto encoded = std::make_shared<EncodedFrame>();
+  encoded->info = last_info;
+  encoded->info.frame = ++frame;
+  encoded->info.exposure = exposure_stops(scene.render.exposure, last_image);
+  encoded->jpeg = encoder.encode(last_image, 85, exposure_scale(encoded->info.exposure));
+  stats.encode_seconds_sum += seconds_since(encode_start);
+  ++stats.encode_count;
+  ++stats.frames;
   return encoded;
+}
+
+void RenderSession::set_exposure(const Exposure& exposure) {
+  scene.render.exposure = exposure;
+  reexpose = true;
 }
 
 SceneInfo RenderSession::info() const {
   return {scene_name, geometry_name(scene.geometry), scene.manifold.name, width, height,
-          scene.render.max_depth};
+          scene.render.max_depth, scene.render.exposure};
 }
 
 }  // namespace geodesic

@@ -32,6 +32,10 @@ struct RenderSession {
   // with each view), and the totals since the scene was installed, which frames report.
   uint64_t non_finite = 0, truncated = 0;
   uint64_t scene_non_finite = 0, scene_truncated = 0;
+  // The last complete pass, linear, and its frame's description: a new exposure re-encodes it.
+  Image last_image;
+  FrameInfo last_info;
+  bool reexpose = false;
 
   // A new scene, its renderer built: the camera goes to the scene's pose, at full resolution.
   void adopt(PreparedScene prepared);
@@ -43,6 +47,11 @@ struct RenderSession {
   std::shared_ptr<EncodedFrame> serve(JpegEncoder& encoder, ServiceStats& stats,
                                       double& pixel_samples);
   SceneInfo info() const;
+  // Sets the exposure; the last frame is encoded again with it at the next serve().
+  void set_exposure(const Exposure& exposure);
+
+ private:
+  std::shared_ptr<EncodedFrame> encode(JpegEncoder& encoder, ServiceStats& stats);
 };
 
 }  // namespace geodesic

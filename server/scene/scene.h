@@ -69,6 +69,16 @@ enum class LightingModel { Paper, Physical };
 // exist to check the first. The values are the shader's LIGHT_SAMPLING_* constants.
 enum class LightSampling : uint32_t { Mis = 0, Bsdf = 1, Light = 2 };
 
+// How linear radiance becomes a display value (PNG, JPEG, the browser's frames; an EXR keeps
+// the radiance): scaled by 2^stops, or, when automatic, by the scale that brings the image's
+// log-average luminance to middle grey (render/exposure.h).
+struct Exposure {
+  double stops = 0;
+  bool automatic = false;
+  bool operator==(const Exposure&) const = default;
+};
+constexpr double kMaxExposureStops = 20;
+
 struct RenderSettings {
   int width = 512;
   int height = 512;
@@ -88,6 +98,7 @@ struct RenderSettings {
   double light_cutoff = 0;
   // Largest luminance one sample may add (fireflies); 0: no clamp, the unbiased default.
   double clamp = 0;
+  Exposure exposure;
 };
 
 struct Scene {

@@ -12,6 +12,7 @@
 
 #include "scene/json_path.h"
 #include "scene/manifold_loader.h"
+#include "scene/render_settings_loader.h"
 #include "scene/mesh_loader.h"
 
 namespace geodesic {
@@ -349,40 +350,6 @@ PointLight read_light(const JsonNode& node) {
   if (name != "point") type.fail("unknown light type \"" + name + "\" (expected \"point\")");
   node.expect_object({"type", "position", "intensity"});
   return {read_vec3(node.at("position")), read_rgb(node.at("intensity"))};
-}
-
-template <typename Enum>
-Enum read_choice(const JsonNode& node, std::initializer_list<std::pair<const char*, Enum>> choices) {
-  const std::string value = read_string(node);
-  std::string expected;
-  for (const auto& [name, e] : choices) {
-    if (value == name) return e;
-    expected += std::string(expected.empty() ? "\"" : ", \"") + name + "\"";
-  }
-  node.fail("unknown value \"" + value + "\" (expected one of " + expected + ")");
-}
-
-RenderSettings read_render(const JsonNode& node) {
-  node.expect_object({"width", "height", "max_depth", "spp", "seed", "ambient", "lighting",
-                      "light_sampling", "light_cutoff", "russian_roulette", "clamp"});
-  RenderSettings render;
-  if (const auto n = node.find("width")) render.width = read_int(*n, 1, 8192);
-  if (const auto n = node.find("height")) render.height = read_int(*n, 1, 8192);
-  if (const auto n = node.find("max_depth")) render.max_depth = read_int(*n, 0, 64);
-  if (const auto n = node.find("spp")) render.spp = read_int(*n, 1, 1000000);
-  if (const auto n = node.find("seed")) render.seed = read_uint64(*n);
-  if (const auto n = node.find("ambient")) render.ambient_light = read_rgb(*n);
-  if (const auto n = node.find("lighting"))
-    render.lighting = read_choice<LightingModel>(
-        *n, {{"physical", LightingModel::Physical}, {"paper", LightingModel::Paper}});
-  if (const auto n = node.find("light_sampling"))
-    render.light_sampling = read_choice<LightSampling>(
-        *n, {{"mis", LightSampling::Mis}, {"bsdf", LightSampling::Bsdf}, {"light", LightSampling::Light}});
-  if (const auto n = node.find("light_cutoff")) render.light_cutoff = read_positive(*n);
-  if (const auto n = node.find("clamp")) render.clamp = read_positive(*n);
-  render.russian_roulette = render.lighting == LightingModel::Physical;
-  if (const auto n = node.find("russian_roulette")) render.russian_roulette = read_bool(*n);
-  return render;
 }
 
 GeometryKind read_geometry(const JsonNode& node) {

@@ -2,6 +2,7 @@
 // files, cancellation, the queue limit, and the errors for bad requests. Every answer is
 // checked against proto/openapi.json.
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <string>
 #include <thread>
@@ -37,7 +38,9 @@ TEST(JobsApi, JobRunsToItsFilesAndReport) {
   DaemonProcess daemon(data.path() / "data");
   const JobsApi api(daemon.port());
 
-  const int64_t id = api.submit(furnace_job(64));
+  json request = furnace_job(64);
+  request["exposure"] = -2;  // the PNG and JPEG show a quarter of the radiance 2: unclipped
+  const int64_t id = api.submit(request);
   const ApiReply list = api.get("/api/jobs");
   ASSERT_EQ(list.status, 200u);
   for (const auto& error : openapi_errors(list.json, "JobList")) ADD_FAILURE() << error;
@@ -73,6 +76,12 @@ TEST(JobsApi, JobRunsToItsFilesAndReport) {
     const Image decoded = decode(reply.body, downloads, format);
     EXPECT_EQ(decoded.width, 32) << format;
     EXPECT_EQ(decoded.height, 24) << format;
+    // The EXR's radiance times 2^-2 through the sRGB curve: code for code in the PNG, within
+    // the JPEG's error in the JPEG.
+    double off = 0;
+    for (size_t i = 0; i < image.rgb.size(); ++i)
+      off = std::max(off, std::abs(double(to_srgb8(decoded.rgb[i])) - to_srgb8(image.rgb[i] / 4)));
+    EXPECT_LE(off, format == std::string("png") ? 1 : 12) << format;
   }
 
   const ApiReply report = api.get(job_path(id, "/report.json"));
@@ -237,6 +246,9 @@ TEST(JobsApi, BadRequestsNameTheField) {
   EXPECT_TRUE(starts(error_of(R"({"scene": "furnace", "spp": 1e400})"), "body: invalid JSON"));
   EXPECT_TRUE(starts(error_of("[1, 2]"), "body: must be a JSON object"));
   EXPECT_TRUE(starts(error_of(with("colour", "red")), "colour: unknown field"));
+  EXPECT_TRUE(starts(error_of(with("exposure", "bright")),
+                     "exposure: must be a number of stops in [-20, 20] or \"auto\""));
+  EXPECT_TRUE(starts(error_of(with("exposure", 21)), "exposure: must be a number of stops"));
   json no_scene = job;
   no_scene.erase("scene");
   EXPECT_TRUE(starts(error_of(no_scene.dump()), "scene: give exactly one of scene and generators"));

@@ -1,5 +1,6 @@
 // The `geodesic` command as a user runs it: exit codes, messages, and the files it writes.
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "render/exposure.h"
 #include "render/image_io.h"
 #include "render_fixture.h"
 
@@ -79,6 +81,46 @@ TEST(Cli, ExrKeepsLinearRadianceAboveOne) {
   std::filesystem::remove(out);
 }
 
+// An 8-bit output is the radiance times 2^stops through the sRGB curve, code for code; the same
+// seed renders the same radiance into the EXR, which exposure leaves alone.
+void expect_exposed(const Image& radiance, const Image& png, double stops) {
+  ASSERT_EQ(radiance.rgb.size(), png.rgb.size());
+  const float scale = exposure_scale(stops);
+  int off = 0, bright = 0;
+  for (size_t i = 0; i < radiance.rgb.size(); ++i) {
+    const int expected = to_srgb8(radiance.rgb[i] * scale);
+    const int got = int(std::lround(png.rgb[i] > 0.0031308f
+                                        ? 255 * (1.055 * std::pow(png.rgb[i], 1 / 2.4) - 0.055)
+                                        : 255 * 12.92 * png.rgb[i]));
+    off += std::abs(got - expected) > 1;
+    bright += expected > to_srgb8(radiance.rgb[i]);
+  }
+  EXPECT_EQ(off, 0) << "of " << radiance.rgb.size() << " values";
+  if (stops > 0) EXPECT_GT(bright, int(radiance.rgb.size() / 2));
+}
+
+TEST(Cli, ExposureScalesThePngAndLeavesTheExrRadiance) {
+  const std::string base = "render " + source_path("scenes/cornell-box.json").string() +
+                           " --spp 4 --width 24 --height 16 -o ";
+  const auto exr = temp_file(".exr"), png = temp_file(".png"), auto_png = temp_file("-auto.png");
+  ASSERT_EQ(run_cli(base + exr.string()).exit_code, 0);
+  const CliRun plain = run_cli(base + exr.string() + " --exposure 1.5");  // EXR: no change
+  ASSERT_EQ(plain.exit_code, 0) << plain.output;
+  const Image radiance = read_image(exr);
+  ASSERT_EQ(run_cli(base + png.string() + " --exposure 1.5").exit_code, 0);
+  expect_exposed(radiance, read_image(png), 1.5);
+
+  // Automatic: the stops that bring the log-average luminance to middle grey, printed.
+  const CliRun automatic = run_cli(base + auto_png.string() + " --exposure auto");
+  ASSERT_EQ(automatic.exit_code, 0) << automatic.output;
+  const double stops = automatic_stops(radiance);
+  char said[64];
+  std::snprintf(said, sizeof said, "exposure %+.2f stops (auto)", stops);
+  EXPECT_NE(automatic.output.find(said), std::string::npos) << automatic.output;
+  expect_exposed(radiance, read_image(auto_png), stops);
+  for (const auto& f : {exr, png, auto_png}) std::filesystem::remove(f);
+}
+
 TEST(Cli, BadInputFailsWithAMessageNamingTheProblem) {
   const std::string cornell = source_path("scenes/cornell-box.json").string();
   const std::string target = "--target-error: must be a relative error in (0, 1), not ";
@@ -101,6 +143,8 @@ TEST(Cli, BadInputFailsWithAMessageNamingTheProblem) {
       {cornell + " -o x.png --backend warp", "--backend: must be auto, ray-query or pipeline"},
       {cornell + " -o x.png --device no-such-gpu", "no Vulkan device matches --device"},
       {cornell, "missing -o OUT.{png,exr,jpg}"},
+      {cornell + " -o x.png --exposure bright", "--exposure: must be a number of stops in [-20, 20] or \"auto\", not \"bright\""},
+      {cornell + " -o x.png --exposure 21", "--exposure: must be a number of stops in [-20, 20]"},
       {"missing.json -o x.png", "missing.json: cannot open file"},
   };
   for (const auto& c : cases) {

@@ -215,6 +215,65 @@ test('the depth control sends settings', async () => {
   await waitFor(() => sentOfType('settings').some((m) => m.max_depth === 3), 'settings {max_depth: 3}');
 });
 
+// Sets the slider as a user's drag ends on `stops`.
+const setExposure = (p, stops) =>
+  p.evaluate((v) => {
+    const slider = document.getElementById('exposure');
+    slider.value = String(v);
+    slider.dispatchEvent(new Event('input', { bubbles: true }));
+  }, stops);
+const frameMessage = (n) => receivedOfType('frame').find((f) => f.frame === n);
+// The canvas's RGB codes.
+const canvasCodes = (p) =>
+  p.evaluate(() => {
+    const c = document.getElementById('view');
+    const { data } = c.getContext('2d').getImageData(0, 0, c.width, c.height);
+    return Array.from(data).filter((_, i) => i % 4 !== 3);
+  });
+const toLinear = (code) => {
+  const s = code / 255;
+  return s <= 0.04045 ? s / 12.92 : ((s + 0.055) / 1.055) ** 2.4;
+};
+const toCode = (v) => {
+  const c = Math.min(1, Math.max(0, v));
+  return 255 * (c <= 0.0031308 ? 12.92 * c : 1.055 * c ** (1 / 2.4) - 0.055);
+};
+
+test('the exposure slider brightens the view at once and auto follows the frames', async () => {
+  const still = await waitForShownFrame(page, 16, (f) => frameMessage(f.frame)?.exposure === 0);
+  const before = await canvasCodes(page);
+  await setExposure(page, 2);
+  assert.equal(await page.textContent('#exposure-value'), '+2.00');
+  await waitFor(() => sentOfType('settings').some((m) => m.exposure === 2), 'settings {exposure: 2}');
+  // The last frame comes again with the new exposure: the accumulation goes on, not over.
+  const bright = await waitForShownFrame(page, still.spp, (f) => frameMessage(f.frame)?.exposure === 2);
+  const after = await canvasCodes(page);
+  // Each code is the old one's radiance times 4 through the sRGB curve, within the JPEG's
+  // error; the same accumulation when no pass completed in between.
+  const predicted = before.map((c) => toCode(4 * toLinear(c)));
+  const mean = (a) => a.reduce((s, v) => s + v, 0) / a.length;
+  const off = mean(after.map((c, i) => Math.abs(c - predicted[i])));
+  console.log(`# exposure +2: mean code ${mean(before).toFixed(1)} -> ${mean(after).toFixed(1)} (predicted ${mean(predicted).toFixed(1)}, off by ${off.toFixed(2)}), spp ${still.spp} -> ${bright.spp}`);
+  assert.ok(mean(predicted) > 1.5 * mean(before), 'a view this bright cannot show +2 stops');
+  assert.ok(off < (bright.spp === still.spp ? 3 : 8), `codes off the 4x prediction by ${off} on average`);
+  await page.screenshot({ path: path.join(SCREENSHOT_DIR, 'walkthrough-exposure.png') });
+
+  await page.check('#exposure-auto');
+  await waitFor(() => sentOfType('settings').some((m) => m.exposure === 'auto'), "settings {exposure: 'auto'}");
+  assert.equal(await page.isDisabled('#exposure'), true, 'the slider is the automatic one now');
+  const auto = await waitForShownFrame(page, 1, (f) => {
+    const e = frameMessage(f.frame)?.exposure;
+    return e !== undefined && e !== 2;
+  });
+  const stops = frameMessage(auto.frame).exposure;
+  await page.waitForFunction((v) => Math.abs(Number(document.getElementById('exposure').value) - v) < 0.25, stops);
+
+  // Back to the scene's own exposure for the tests that follow.
+  await page.uncheck('#exposure-auto');
+  await setExposure(page, 0);
+  await waitForShownFrame(page, 1, (f) => frameMessage(f.frame)?.exposure === 0);
+});
+
 test('W moves the camera forward and the image changes', async () => {
   // A reference image deep enough that its noise is small beside a change of view.
   const still = await waitForShownFrame(page, 8);

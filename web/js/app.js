@@ -3,7 +3,8 @@
 // page keeps only what the user asked for (`wanted`), so it can ask again when a reconnect
 // starts a fresh session.
 //
-// URL parameters set the starting point, e.g. ?scene=torus-cornell&width=320&height=240&depth=3,
+// URL parameters set the starting point, e.g. ?scene=torus-cornell&width=320&height=240&depth=3
+// &exposure=1.5 (or exposure=auto),
 // and ?token=... is the daemon's token when it has one (for the WebSocket and the jobs API).
 
 import { Connection, defaultSocketUrl } from './connection.js';
@@ -11,6 +12,7 @@ import { Viewer } from './viewer.js';
 import { Controls } from './controls.js';
 import { Stats } from './stats.js';
 import { JobsPanel } from './jobs.js';
+import { ExposureControl } from './exposure.js';
 
 const $ = (id) => document.getElementById(id);
 const clamp = (v, lo, hi) => Math.min(hi, Math.max(lo, v));
@@ -40,12 +42,18 @@ const intParam = (name) => {
   const v = Number.parseInt(params.get(name) ?? '', 10);
   return Number.isFinite(v) ? v : null;
 };
+function exposureParam(text) {
+  if (text === 'auto') return 'auto';
+  const v = Number.parseFloat(text ?? '');
+  return Number.isFinite(v) ? clamp(v, -20, 20) : null;
+}
 const wanted = {
   scene: params.get('scene'),
   generators: null, // the text of a dropped .gen file, while its space is what we want
   width: intParam('width'),
   height: intParam('height'),
   max_depth: intParam('depth'),
+  exposure: exposureParam(params.get('exposure')), // stops, 'auto', or null
 };
 
 const limits = { max_width: 1920, max_height: 1080, max_depth: 16 };
@@ -221,7 +229,9 @@ function applyWantedSettings(msg) {
   if (wanted.width !== null && wanted.width !== msg.width) settings.width = wanted.width;
   if (wanted.height !== null && wanted.height !== msg.height) settings.height = wanted.height;
   if (wanted.max_depth !== null && wanted.max_depth !== msg.max_depth) settings.max_depth = wanted.max_depth;
+  if (wanted.exposure !== null && wanted.exposure !== msg.exposure) settings.exposure = wanted.exposure;
   if (Object.keys(settings).length > 0) connection.send({ type: 'settings', ...settings });
+  exposure.show(wanted.exposure ?? msg.exposure);
 
   ui.width.value = String(wanted.width ?? msg.width);
   ui.height.value = String(wanted.height ?? msg.height);
@@ -245,6 +255,7 @@ function handleFrame(meta, jpeg) {
     if (lastFrame && meta.spp > lastFrame.spp && meta.elapsed > lastFrame.elapsed) return;
   }
   lastFrame = meta;
+  exposure.showFrame(meta.exposure);
   viewer.show(meta, jpeg);
   stats.update(meta);
 }
@@ -317,6 +328,10 @@ function sendSettings(field, value) {
 ui.width.addEventListener('change', () => sendSettings('width', readInt(ui.width, 16, limits.max_width)));
 ui.height.addEventListener('change', () => sendSettings('height', readInt(ui.height, 16, limits.max_height)));
 ui.depth.addEventListener('change', () => sendSettings('max_depth', readInt(ui.depth, 0, limits.max_depth)));
+const exposure = new ExposureControl(
+  { slider: $('exposure'), value: $('exposure-value'), auto: $('exposure-auto') },
+  (value) => sendSettings('exposure', value),
+);
 
 // Render jobs render the current view offline at full quality (web/js/jobs.js).
 const jobs = new JobsPanel(
@@ -331,11 +346,12 @@ ui.jobButton.addEventListener('click', () =>
     width: Number.parseInt(ui.width.value, 10),
     height: Number.parseInt(ui.height.value, 10),
     max_depth: Number.parseInt(ui.depth.value, 10),
+    exposure: exposure.value,
   }),
 );
 jobs.start();
 
 // For debugging from the console.
-window.geodesic = { connection, viewer, stats, controls, wanted, jobs };
+window.geodesic = { connection, viewer, stats, controls, wanted, jobs, exposure };
 
 connection.connect();
