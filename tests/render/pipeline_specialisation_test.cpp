@@ -96,14 +96,18 @@ TEST(PipelineFeatures, EachBundledSceneGetsItsPairingKindAndPrimitives) {
       {"torus-cornell", Crossing::Translation, true, true, false},
       {"mirrored-dodecahedron", Crossing::Reflection, true, true, false},
       {"seifert-weber", Crossing::Isometry, true, true, false},
-      {"poincare-sphere", Crossing::Isometry, true, true, true},
+      {"poincare-sphere", Crossing::Isometry, true, true, false},
       {"spherical-spheres", Crossing::ChartChange, true, false, false},
-      {"hyperbolic-spheres", Crossing::None, true, true, true},
+      {"hyperbolic-spheres", Crossing::None, true, true, false},
       {"furnace", Crossing::None, false, true, false},
   };
   for (const Expected& e : expected) {
     const Scene scene = bundled(e.scene);
     const PipelineFeatures f = scene_features(scene, pack_scene(scene));
+    Scene other = scene;  // the other model: the same features otherwise
+    other.render.lighting = e.paper ? LightingModel::Physical : LightingModel::Paper;
+    const PipelineFeatures g = scene_features(other, pack_scene(other));
+    EXPECT_EQ(g.paper, !e.paper) << e.scene;
     EXPECT_EQ(f.crossing, e.crossing) << e.scene << ": " << crossing_name(f.crossing);
     EXPECT_EQ(f.spheres, e.spheres) << e.scene;
     EXPECT_EQ(f.triangles, e.triangles) << e.scene;
@@ -145,10 +149,12 @@ TEST(DumpedShaders, ScenesWithoutPointLightsCarryNoPointLightSampling) {
   EXPECT_FALSE(contains(lamps.glsl, "e.kind==EMITTER_POINT"));
   EXPECT_TRUE(contains(cornell.glsl, "ls.point=true"));
   // Paper model: eq. 2.2's sum over point lights.
-  Scene dark = bundled("hyperbolic-spheres");
+  Scene lit = bundled("hyperbolic-spheres");
+  lit.render.lighting = LightingModel::Paper;
+  Scene dark = lit;
   dark.lights.clear();
   const Dump without = dump_of(dark, "dark");
-  const Dump with = dump_of(bundled("hyperbolic-spheres"), "lit");
+  const Dump with = dump_of(lit, "lit");
   EXPECT_FALSE(contains(without.glsl, "directIllumination"));
   EXPECT_FALSE(contains(without.glsl, "lights["));
   EXPECT_TRUE(contains(with.glsl, "directIllumination"));
