@@ -3,8 +3,9 @@
 # built (--format docker keeps the HEALTHCHECK), then one container with a token and a volume:
 # the HEALTHCHECK passes (`podman healthcheck run`: without systemd podman never runs it by
 # itself), /api needs the token (401), a WebSocket gets a JPEG frame, a job's PNG comes back,
-# `podman restart` keeps the job, the daemon runs as uid/gid 10001, the binary is stripped, and
-# the image is under 1 GB (its size is printed). Then docker/compose.yaml with podman-compose.
+# `podman restart` keeps the job, a job killed with the daemon (kill -9) resumes from its
+# checkpoint, the daemon runs as uid/gid 10001, the binary is stripped, and the image is under
+# 1 GB (its size is printed). Then docker/compose.yaml with podman-compose.
 # Exits 77 (skipped), saying so, only when podman cannot start a container on this machine.
 # Needs root (rootful podman, debootstrap).
 set -euo pipefail
@@ -98,6 +99,36 @@ state=$(curl -s "${auth[@]}" "$base/api/jobs/$id" | sed -n 's/.*"state":"\([a-z]
 [ "$state" = done ] || fail "after the restart job $id is '$state'"
 cmp -s <(curl -s "${auth[@]}" "$base/api/jobs/$id/result.png") "$tmp/job.png" || fail "the PNG changed across the restart"
 echo "image test: job $id and its PNG survived podman restart"
+
+# kill -9 in the middle of a job: the next start resumes it from its checkpoint (made every
+# 10 s), the sample count going on from there.
+job_field() { sed -n "s/.*\"$1\":\([0-9a-z]*\).*/\1/p"; }
+reply=$(curl -s "${auth[@]}" -w '\n%{http_code}' -X POST "$base/api/jobs" \
+  -d '{"scene": "cornell-box", "width": 64, "height": 48, "seconds": 3600, "formats": ["png"]}')
+[ "$(tail -n1 <<<"$reply")" = 202 ] || fail "POST /api/jobs: $reply"
+long=$(head -n1 <<<"$reply" | job_field id)
+checkpoint=0
+for _ in $(seq 60); do
+  checkpoint=$(curl -s "${auth[@]}" "$base/api/jobs/$long" | job_field checkpoint_samples)
+  [ "${checkpoint:-0}" -gt 0 ] && break
+  sleep 2
+done
+[ "${checkpoint:-0}" -gt 0 ] || fail "job $long made no checkpoint in 120 s"
+command podman kill -s KILL "$name" >/dev/null 2>"$tmp/run.err" || fail "podman kill: $(cat "$tmp/run.err")"
+command podman start "$name" >/dev/null 2>"$tmp/run.err" || fail "podman start: $(cat "$tmp/run.err")"
+wait_healthy "after kill -9"
+samples=0
+for _ in $(seq 60); do
+  status=$(curl -s "${auth[@]}" "$base/api/jobs/$long")
+  state=$(sed -n 's/.*"state":"\([a-z]*\)".*/\1/p' <<<"$status")
+  samples=$(job_field samples <<<"$status")
+  [ "$state" = running ] && [ "${samples:-0}" -gt "$checkpoint" ] && break
+  sleep 2
+done
+[ "$state" = running ] && [ "${samples:-0}" -gt "$checkpoint" ] ||
+  fail "after kill -9 job $long is '$state' at ${samples:-?} spp (its checkpoint had $checkpoint)"
+echo "image test: kill -9 with job $long checkpointed at $checkpoint spp; resumed, now $samples spp"
+curl -s "${auth[@]}" -X DELETE "$base/api/jobs/$long" >/dev/null
 command podman rm -f -t 5 "$name" >/dev/null 2>&1
 
 bash "$here/compose_test.sh" "$image" "$token" "$tmp" "$name-compose"
