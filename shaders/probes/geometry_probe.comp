@@ -24,7 +24,7 @@ struct ProbeCase {
   vec4 chart;      // xyz: a chart point; w: a chart parameter s
   vec4 normal;     // unit 3-vector for the sampling routines
   vec4 colour;     // linear RGB
-  vec4 uv;         // xy: two uniform numbers for sampleCosineHemisphere
+  vec4 uv;         // xy: two uniform numbers for the sampling routines; zw: two densities
   uvec4 rng;       // pixel, sample index, seed, pcgHash input
 };
 
@@ -54,6 +54,7 @@ struct ProbeResult {
   uvec4 hashes;            // pcgHash(rng.w), rngSeed(rng.xyz), the state after the draws
   vec4 draws;              // four successive rngNext from that seed
   vec4 reflected;          // reflectInChartPlane(p, plane)
+  vec4 triangleSample;     // sampleUniformTriangle(uv.xy), powerHeuristic(uv.z, uv.w)
 };
 
 layout(std430, binding = 0) readonly buffer Cases { ProbeCase cases[]; };
@@ -94,6 +95,7 @@ void main() {
   r.basisTangent = vec4(tb, 0.0);
   r.basisBitangent = vec4(bb, 0.0);
   r.cosineSample = vec4(sampleCosineHemisphere(c.normal.xyz, c.uv.xy), 0.0);
+  r.triangleSample = vec4(sampleUniformTriangle(c.uv.xy), powerHeuristic(c.uv.z, c.uv.w), 0.0);
 
   uint state = rngSeed(c.rng.x, c.rng.y, c.rng.z);
   uint seed = state;

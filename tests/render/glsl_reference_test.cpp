@@ -189,11 +189,22 @@ TEST_P(GlslReference, SamplingMatchesWithinOneMillionth) {
         c.uv = {u1, u2, 0, 0};
         cases.push_back(c);
       }
+  // The power heuristic's two densities: zero, tiny, equal, huge and infinite (a delta lobe).
+  const float densities[] = {0.0f, 1e-6f, 0.5f, 1.0f, 3.0f, 1e6f, INFINITY};
+  for (size_t i = 0; i < cases.size(); ++i) {
+    cases[i].uv[2] = densities[i % 7];
+    cases[i].uv[3] = densities[(i / 7) % 7];
+  }
   const auto results = run_probe(k, cases);
   for (size_t i = 0; i < cases.size(); ++i) {
     const ProbeCase& c = cases[i];
     const ProbeResult& g = results[i];
     const Vec3 n = v3(c.normal);
+    const Barycentrics b = sample_uniform_triangle(c.uv[0], c.uv[1]);
+    EXPECT_NEAR(g.triangle_sample[0], b.b1, 1e-6);
+    EXPECT_NEAR(g.triangle_sample[1], b.b2, 1e-6);
+    EXPECT_NEAR(g.triangle_sample[2], power_heuristic(c.uv[2], c.uv[3]), 1e-6)
+        << c.uv[2] << ", " << c.uv[3];
     SCOPED_TRACE("case " + std::to_string(i));
     const TangentFrame frame = orthonormal_basis(n);
     EXPECT_LE(max_abs(v3(g.basis_tangent) - frame.tangent), 1e-6);
