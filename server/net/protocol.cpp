@@ -162,6 +162,7 @@ std::string hello_message(uint64_t session, const std::vector<std::string>& scen
                     {{"max_message_bytes", max_message_bytes},
                      {"max_width", limits.max_width},
                      {"max_height", limits.max_height},
+                     {"max_depth", limits.max_depth},
                      {"max_sessions", limits.max_sessions},
                      {"idle_timeout_seconds", idle_timeout.count() / 1000.0}}}});
 }

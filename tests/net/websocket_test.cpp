@@ -40,6 +40,7 @@ TEST(WebSocket, HelloThenSceneThenFramesWithTheirJpeg) {
   ASSERT_EQ(hello["type"], "hello");
   EXPECT_EQ(hello["limits"]["max_message_bytes"], 1 << 20);
   EXPECT_EQ(hello["limits"]["idle_timeout_seconds"], 600);
+  EXPECT_EQ(hello["limits"]["max_depth"], 16);
   EXPECT_NE(std::find(hello["scenes"].begin(), hello["scenes"].end(), "cornell-box"),
             hello["scenes"].end());
   const json scene = client.read_json();

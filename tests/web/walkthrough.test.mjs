@@ -176,6 +176,8 @@ test('the page loads, connects and shows a frame', async () => {
   const options = await page.$$eval('#scene-picker option', (os) => os.map((o) => o.value));
   assert.deepEqual(options, hello.scenes);
   assert.ok(options.includes('cornell-box'));
+  // The depth field's bound is the server's, from `hello`.
+  assert.equal(await page.getAttribute('#depth', 'max'), String(hello.limits.max_depth));
 
   // The default scene's first frames may come at its own resolution, before our settings.
   const shown = await waitForShownFrame(page, 1, (f) => f.width === 160 && f.height === 120);

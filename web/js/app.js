@@ -56,7 +56,7 @@ const wanted = {
   exposure: exposureParam(params.get('exposure')), // stops, 'auto', or null
 };
 
-const limits = { max_width: 1920, max_height: 1080, max_depth: 16 };
+const limits = { max_width: 1920, max_height: 1080, max_depth: 16 }; // until `hello` gives the server's
 let currentScene = null; // the last `scene` message
 let lastFrame = null;    // the last `frame` message (its camera goes into render jobs)
 let openPending = false; // an `open` sent and not yet answered by `scene` or `error`
@@ -174,6 +174,7 @@ function onHello(msg) {
   Object.assign(limits, msg.limits || {});
   ui.width.max = String(limits.max_width);
   ui.height.max = String(limits.max_height);
+  ui.depth.max = String(limits.max_depth);
 
   const scenes = Array.isArray(msg.scenes) ? msg.scenes : [];
   ui.picker.replaceChildren(...scenes.map((name) => new Option(name, name)));
