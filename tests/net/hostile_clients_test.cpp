@@ -212,6 +212,12 @@ TEST(HostileClients, TargetsOutsideTheWebDirectoryAreRefused) {
 // and serves again once descriptors are free. The daemon runs in this process, so the
 // descriptor limit is this process's, lowered to 16 above those open.
 TEST(HostileClients, OutOfFileDescriptorsTheListenerBacksOffAndServesAgain) {
+#ifdef GEODESIC_SANITIZED
+  // The daemon runs in this process, which the test leaves without a free descriptor; UBSan's
+  // vptr check opens /proc/self/maps on a type-cache miss and then reports a false "invalid
+  // vptr" (samangh/libsg#40 describes the same). The plain build runs it.
+  GTEST_SKIP() << "needs a process without free descriptors, which UBSan's vptr check cannot run in";
+#endif
   Daemon daemon;
   expect_healthy(daemon.port(), 0);
   rlimit limit{};
