@@ -91,6 +91,10 @@ void WebSocketSession::on_accept(beast::error_code ec) {
   relay_ = std::make_shared<FrameRelay>();
   relay_->session = weak_from_this();
   relay_->strand = ws_.get_executor();
+  // A full server: the longest-silent session gives up its slot while this one's first scene
+  // is prepared, not after.
+  RenderService& render = context_.render;
+  if (render.stats().sessions >= render.limits().max_sessions) eviction_asked_ = evict_idle_session();
   // The first scene's renderer is built on the preparation pool, as every other one.
   auto build = [self = shared_from_this()] {
     auto first = std::make_shared<PreparedScene>();
@@ -122,7 +126,7 @@ void WebSocketSession::open_render_session(int retries, std::shared_ptr<Prepared
         [relay = relay_](std::shared_ptr<const EncodedFrame> frame) { relay->deliver(frame); },
         [relay = relay_](const std::string& reason) { relay->fail(reason); });
   } catch (const std::exception& e) {
-    if (retries > 0 && (retries < kEvictionRetries || evict_idle_session())) {
+    if (retries > 0 && (retries < kEvictionRetries || eviction_asked_ || evict_idle_session())) {
       timer_.expires_after(kEvictionRetryDelay);
       timer_.async_wait([self = shared_from_this(), retries, first](beast::error_code ec) {
         if (!ec) self->open_render_session(retries - 1, first);

@@ -65,6 +65,7 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   // last_message_ for other connections' threads (0 until the session is open).
   std::atomic<std::chrono::steady_clock::rep> last_message_ticks_{0};
   std::atomic<bool> evicted_{false};
+  bool eviction_asked_ = false;  // this connection had an idle session give up its slot
 
   std::deque<std::string> texts_;  // hello, scene, error: sent before any waiting frame
   std::shared_ptr<const EncodedFrame> waiting_frame_;
