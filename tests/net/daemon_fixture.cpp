@@ -136,6 +136,15 @@ WsClient::Frame WsClient::read_frame(std::chrono::milliseconds timeout) {
   return {info, std::move(jpeg.data)};
 }
 
+WsClient::Frame WsClient::read_frame_where(const std::function<bool(const nlohmann::json&)>& accept) {
+  const auto deadline = Clock::now() + 60s;
+  while (Clock::now() < deadline) {
+    Frame frame = read_frame();
+    if (accept(frame.info)) return frame;
+  }
+  throw std::runtime_error("no frame as expected within 60 s");
+}
+
 uint16_t WsClient::read_until_close(std::chrono::milliseconds timeout) {
   const auto deadline = Clock::now() + timeout;
   for (;;) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <cstdint>
 #include <filesystem>
 #include <memory>
@@ -78,6 +79,9 @@ class WsClient {
   // Skips other messages (frames with their JPEGs) up to the next message of `type`.
   nlohmann::json read_until(const std::string& type, std::chrono::milliseconds timeout = 30s);
   Frame read_frame(std::chrono::milliseconds timeout = 30s);
+  // The next frame that `accept` takes within 60 s, skipping others (earlier sizes, frames
+  // already queued); throws when none comes.
+  Frame read_frame_where(const std::function<bool(const nlohmann::json&)>& accept);
   // Reads until the server closes; its close code (0 when the connection ends without one).
   uint16_t read_until_close(std::chrono::milliseconds timeout = 30s);
   void close();  // a normal close (1000)

@@ -19,15 +19,6 @@ namespace {
 
 using nlohmann::json;
 
-WsClient::Frame frame_where(WsClient& client, const std::function<bool(const json&)>& accept) {
-  const auto deadline = std::chrono::steady_clock::now() + 60s;
-  while (std::chrono::steady_clock::now() < deadline) {
-    WsClient::Frame frame = client.read_frame();
-    if (accept(frame.info)) return frame;
-  }
-  throw std::runtime_error("no frame as expected within 60 s");
-}
-
 Image decode(const WsClient::Frame& frame) {
   const auto path = std::filesystem::temp_directory_path() /
                     ("exposure-session-" + std::to_string(::getpid()) + ".jpg");
@@ -44,12 +35,12 @@ TEST(ExposureSession, ANewExposureReencodesTheAccumulationAndItsJpegFollowsTwoTo
   const json scene = client.read_until("scene");
   EXPECT_EQ(scene["exposure"], 0.0);
   client.send({{"type", "settings"}, {"width", 64}, {"height", 48}});
-  const auto plain = frame_where(client, [](const json& f) {
+  const auto plain = client.read_frame_where([](const json& f) {
     return f["width"] == 64 && f["spp"] >= 16 && f["exposure"] == 0.0;
   });
 
   client.send({{"type", "settings"}, {"exposure", 2}});
-  const auto bright = frame_where(client, [](const json& f) { return f["exposure"] == 2.0; });
+  const auto bright = client.read_frame_where([](const json& f) { return f["exposure"] == 2.0; });
   // The same accumulation, not a new one: as many samples or more, and the same reset time.
   EXPECT_GE(bright.info["spp"].get<int>(), plain.info["spp"].get<int>());
   EXPECT_GE(bright.info["elapsed"].get<double>(), plain.info["elapsed"].get<double>());
@@ -66,7 +57,7 @@ TEST(ExposureSession, ANewExposureReencodesTheAccumulationAndItsJpegFollowsTwoTo
   EXPECT_NEAR(sum_b / sum_a, 4.0, 0.4);
 
   client.send({{"type", "settings"}, {"exposure", "auto"}});
-  const auto automatic = frame_where(client, [](const json& f) { return f["exposure"] != 2.0; });
+  const auto automatic = client.read_frame_where([](const json& f) { return f["exposure"] != 2.0; });
   const double stops = automatic.info["exposure"];
   EXPECT_GT(stops, -kMaxExposureStops);
   EXPECT_LT(stops, kMaxExposureStops);

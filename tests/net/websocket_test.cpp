@@ -19,16 +19,6 @@ const json kSmallFrames = {{"type", "settings"}, {"width", 64}, {"height", 48}};
 
 bool is_small(const json& frame) { return frame["width"] == 64 && frame["height"] == 48; }
 
-// The next frame that `accept` takes, skipping others (earlier sizes, frames already queued).
-WsClient::Frame frame_where(WsClient& client, const std::function<bool(const json&)>& accept) {
-  const auto deadline = std::chrono::steady_clock::now() + 60s;
-  while (std::chrono::steady_clock::now() < deadline) {
-    WsClient::Frame frame = client.read_frame();
-    if (accept(frame.info)) return frame;
-  }
-  throw std::runtime_error("no frame as expected within 60 s");
-}
-
 int open_sessions(uint16_t port) {
   return json::parse(http_get(port, "/healthz").body())["sessions"].get<int>();
 }
@@ -55,7 +45,7 @@ TEST(WebSocket, HelloThenSceneThenFramesWithTheirJpeg) {
   client.send(kSmallFrames);
   uint64_t last_number = first.info["frame"];
   for (int i = 0; i < 3; ++i) {
-    const auto frame = frame_where(client, is_small);
+    const auto frame = client.read_frame_where(is_small);
     ASSERT_GE(frame.jpeg.size(), 4u);
     EXPECT_EQ(static_cast<unsigned char>(frame.jpeg[0]), 0xFF);  // JPEG SOI marker
     EXPECT_EQ(static_cast<unsigned char>(frame.jpeg[1]), 0xD8);
@@ -69,10 +59,10 @@ TEST(WebSocket, MoveResetsAccumulationAndMovesTheCamera) {
   Daemon daemon;
   WsClient client(daemon.port());
   client.send(kSmallFrames);
-  const auto still = frame_where(client, [](const json& f) { return is_small(f) && f["spp"] >= 16; });
+  const auto still = client.read_frame_where([](const json& f) { return is_small(f) && f["spp"] >= 16; });
   client.send({{"type", "move"}, {"forward", 0.3}, {"yaw", 5}});
   const auto moved =
-      frame_where(client, [&](const json& f) { return f["camera"] != still.info["camera"]; });
+      client.read_frame_where([&](const json& f) { return f["camera"] != still.info["camera"]; });
   EXPECT_LT(moved.info["spp"], still.info["spp"]);
   EXPECT_LT(moved.info["elapsed"], still.info["elapsed"]);
 }
@@ -82,10 +72,10 @@ TEST(WebSocket, StillCameraAccumulatesAndTheErrorFalls) {
   WsClient client(daemon.port());
   client.send(kSmallFrames);
   const auto early =
-      frame_where(client, [](const json& f) { return is_small(f) && !f["error"].is_null(); });
+      client.read_frame_where([](const json& f) { return is_small(f) && !f["error"].is_null(); });
   const uint32_t early_spp = early.info["spp"];
-  const auto later = frame_where(
-      client, [&](const json& f) { return is_small(f) && f["spp"] >= 16 * early_spp; });
+  const auto later = client.read_frame_where(
+      [&](const json& f) { return is_small(f) && f["spp"] >= 16 * early_spp; });
   EXPECT_GT(later.info["elapsed"], early.info["elapsed"]);
   // The error falls as 1/sqrt(spp): 16 times the samples, a quarter of the error.
   EXPECT_LT(later.info["error"].get<double>(), 0.7 * early.info["error"].get<double>());
@@ -120,7 +110,7 @@ TEST(WebSocket, BadMessagesGetAnErrorAndTheSessionGoesOn) {
   }
   ASSERT_FALSE(client.send_raw("\x01\x02", /*binary=*/true));
   EXPECT_EQ(client.read_until("error")["field"], "");
-  EXPECT_TRUE(is_small(frame_where(client, is_small).info));  // still streaming
+  EXPECT_TRUE(is_small(client.read_frame_where(is_small).info));  // still streaming
 }
 
 TEST(WebSocket, UnknownSceneIsAnErrorNamingScene) {
@@ -175,14 +165,14 @@ TEST(WebSocket, FramesCountGeodesicsCutOffAtTheCrossingCap) {
   client.send({{"type", "open"}, {"document", document}});
   client.read_until("scene");
   client.send(kSmallFrames);
-  const json first = frame_where(client, is_small).info;
+  const json first = client.read_frame_where(is_small).info;
   EXPECT_GT(first["truncated_geodesics"].get<uint64_t>(), 0u);
-  const json later = frame_where(client, [&](const json& f) {
+  const json later = client.read_frame_where([&](const json& f) {
                        return is_small(f) && f["spp"] > first["spp"];
                      }).info;
   EXPECT_GT(later["truncated_geodesics"], first["truncated_geodesics"]);
   client.send({{"type", "move"}, {"yaw", 10}});
-  const json moved = frame_where(client, [&](const json& f) { return f["moving"] == true; }).info;
+  const json moved = client.read_frame_where([&](const json& f) { return f["moving"] == true; }).info;
   EXPECT_GE(moved["truncated_geodesics"], later["truncated_geodesics"]);
   EXPECT_EQ(moved["non_finite_samples"], 0);
   const std::string metrics = http_get(daemon.port(), "/metrics").body();
@@ -193,7 +183,7 @@ TEST(WebSocket, FramesCountGeodesicsCutOffAtTheCrossingCap) {
   client.send({{"type", "open"}, {"scene", "cornell-box"}});
   client.read_until("scene");
   // Its own size (a scene's open resets the frame size): no frame of the torus left in flight.
-  const json box = frame_where(client, [](const json& f) { return f["height"] == 512; }).info;
+  const json box = client.read_frame_where([](const json& f) { return f["height"] == 512; }).info;
   EXPECT_EQ(box["truncated_geodesics"], 0);
   EXPECT_EQ(box["non_finite_samples"], 0);
 }
@@ -247,7 +237,7 @@ TEST(WebSocket, SlowReaderMakesTheServerDropFramesNotBufferThem) {
   Daemon daemon(options);
   WsClient client(daemon.port(), /*receive_buffer=*/8192);
   client.send({{"type", "settings"}, {"width", 128}, {"height", 96}});
-  frame_where(client, [](const json& f) { return f["width"] == 128; });
+  client.read_frame_where([](const json& f) { return f["width"] == 128; });
 
   const auto& counters = daemon.server().counters();
   const uint64_t dropped_before = counters.frames_dropped;
