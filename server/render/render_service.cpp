@@ -19,6 +19,7 @@
 #include "render/jpeg_encoder.h"
 #include "render/render_session.h"
 #include "render/renderer.h"
+#include "render/session_rota.h"
 #include "render/vulkan_context.h"
 #include "scene/scene_loader.h"
 
@@ -26,6 +27,9 @@ namespace geodesic {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+constexpr auto kSlice = std::chrono::duration_cast<Clock::duration>(
+    std::chrono::duration<double>(RenderService::kSliceSeconds));
 
 // After a device loss, a new device is tried at most this often.
 constexpr auto kDeviceRetry = std::chrono::seconds(1);
@@ -67,9 +71,9 @@ struct RenderService::Impl {
   std::condition_variable background_turn;
   std::deque<uint64_t> background_queue;
   uint64_t next_ticket = 1, granted = 0;
-  std::map<SessionId, std::unique_ptr<Session>> sessions;
+  SessionRota::Sessions sessions;
   SessionId next_id = 1;
-  SessionId last_served = 0;
+  SessionRota rota;
   bool stopping = false;
   // Callers of run_beside working on the device now: the service ends after them.
   mutable int beside = 0;
@@ -134,34 +138,40 @@ struct RenderService::Impl {
   // True when `renderer` was built on the current device (not on one lost since).
   bool current(const Renderer& renderer) const { return &renderer.context() == ctx.get(); }
 
-  // The render thread: serve sessions round-robin, one slice each.
+  // The render thread: one slice at a time, to the session the rota names.
   void run() {
     std::unique_lock lock(mutex);
     while (!stopping) {
       // A session's or a job's submission lost the device: replace it before anyone renders on
       // the lost one (which would fail whichever session came next).
       if (ctx->lost()) replace_lost_device();
-      auto it = sessions.upper_bound(last_served);
+      auto it = rota.next(sessions);
       if (it == sessions.end()) {
         // Between rounds: a background turn, or a pause when there is nothing to do.
         const bool handed_over = hand_over_background(lock);
         if (ctx->lost()) replace_lost_device();
-        it = sessions.begin();
+        it = rota.next(sessions);
         if (it == sessions.end() && !handed_over)
           wake.wait_for(lock, std::chrono::milliseconds(50));
       }
+      Clock::duration refining{};  // a slice that no one waits for
       if (it != sessions.end()) {
-        last_served = it->first;
         stats.queue_depth = int(sessions.size()) - 1;
+        const auto slice_start = Clock::now();
         try {
           serve(*it->second);
         } catch (const std::exception& e) {  // its renderer may be half-way through a pass
           fail(it->first, std::string("render: ") + e.what());
         }
+        if (!rota.out_of_turn()) refining = Clock::now() - slice_start;
       }
+      // A scene being prepared beside (a client waits for it, on threads below this one's
+      // priority) gets the processor for as long again as a refining slice took.
+      const auto step_aside = beside > 0 ? std::min(refining, kSlice) : Clock::duration{};
       // Let waiting callers (moves, new scenes) in between slices.
       publish();
       lock.unlock();
+      std::this_thread::sleep_for(step_aside);
       for (int spins = 0; waiting.load() > 0 && spins < 100; ++spins)
         std::this_thread::sleep_for(std::chrono::microseconds(100));
       lock.lock();

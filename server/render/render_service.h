@@ -1,5 +1,6 @@
 // The daemon's renderer: owns the Vulkan device and one render thread that serves every session
-// in turn (round-robin, a time slice each, so no session starves another), keeps each session's
+// in turn (round-robin, a time slice each, so no session starves another; a session whose new
+// view awaits its first frame goes in between, every other slice at most), keeps each session's
 // scene, camera, settings and accumulation, and hands each new JPEG frame to the session's
 // callback. Thread-safe: every public function may be called from any thread.
 #pragma once

@@ -56,6 +56,7 @@ void RenderSession::restart(bool now_moving) {
   reset_time = Clock::now();
   slicer.restart();
   last_image = {};  // of the old view
+  first_frame_due = true;
 }
 
 std::shared_ptr<EncodedFrame> RenderSession::serve(JpegEncoder& encoder, ServiceStats& stats,
@@ -81,6 +82,7 @@ std::shared_ptr<EncodedFrame> RenderSession::serve(JpegEncoder& encoder, Service
   scene_truncated += new_truncated;
   stats.non_finite_samples += new_non_finite;
   stats.truncated_geodesics += new_truncated;
+  first_frame_due = false;
   last_image = renderer->image();
   last_info = {0, renderer->samples(), seconds_since(reset_time), renderer->estimated_error(),
                renderer->width(), renderer->height(), moving, 0, pose, scene_non_finite,

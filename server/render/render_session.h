@@ -36,6 +36,8 @@ struct RenderSession {
   Image last_image;
   FrameInfo last_info;
   bool reexpose = false;
+  // A new view (opened, moved, resized, another scene) whose first frame has not gone out yet.
+  bool first_frame_due = true;
 
   // A new scene, its renderer built: the camera goes to the scene's pose, at full resolution.
   void adopt(PreparedScene prepared);
@@ -49,6 +51,8 @@ struct RenderSession {
   SceneInfo info() const;
   // Sets the exposure; the last frame is encoded again with it at the next serve().
   void set_exposure(const Exposure& exposure);
+  // Someone waits for this session's next frame: a new view's first, or a new exposure's.
+  bool urgent() const { return first_frame_due || reexpose; }
 
  private:
   std::shared_ptr<EncodedFrame> encode(JpegEncoder& encoder, ServiceStats& stats);

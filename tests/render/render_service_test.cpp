@@ -1,8 +1,11 @@
 // The daemon's render service without the network: sessions, progressive frames, moves,
 // settings and bad input.
+#include <algorithm>
 #include <chrono>
 #include <condition_variable>
 #include <mutex>
+#include <utility>
+#include <vector>
 
 #include "render/render_service.h"
 #include "render_fixture.h"
@@ -93,6 +96,54 @@ TEST(RenderService, SessionsShareTheDeviceFairly) {
   service.close_session(first);
   EXPECT_EQ(service.stats().sessions, 1);
   service.close_session(second);
+}
+
+// A moved session's first frame goes out of turn: beside seven busy sessions it waits for at
+// most one other session's slice, not a round of seven.
+TEST(RenderService, ANewViewsFirstFrameDoesNotWaitForTheRound) {
+  constexpr int kSessions = 8;
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::vector<std::pair<int, bool>> frames;  // (session, moving) in the order they came
+  RenderService service("", source_path("scenes").string(), {.max_sessions = kSessions});
+  std::vector<RenderService::SessionId> ids;
+  for (int i = 0; i < kSessions; ++i) {
+    ids.push_back(service.open_session([&, i](std::shared_ptr<const EncodedFrame> frame) {
+      std::lock_guard lock(mutex);
+      frames.emplace_back(i, frame->info.moving);
+      changed.notify_all();
+    }));
+    service.apply_settings(ids.back(), {.width = 32, .height = 32});
+  }
+  auto wait = [&](auto ok) {
+    std::unique_lock lock(mutex);
+    return changed.wait_for(lock, std::chrono::seconds(60), [&] { return ok(frames); });
+  };
+  // Every session streams (each pass one slice at this size).
+  ASSERT_TRUE(wait([&](const auto& log) {
+    for (int i = 0; i < kSessions; ++i)
+      if (std::count(log.begin(), log.end(), std::pair{i, false}) < 3) return false;
+    return true;
+  }));
+  for (int move = 0; move < 6; ++move) {
+    const int mover = move % kSessions;
+    size_t before = 0;
+    {
+      std::lock_guard lock(mutex);
+      before = frames.size();
+    }
+    // move_camera waits for the slice under way: what follows it is rendered after the move.
+    service.move_camera(ids[mover], {.yaw = move % 2 ? 2.0 : -2.0});
+    const auto moved = [&](const auto& log) {
+      return std::find(log.cbegin() + before, log.cend(), std::pair{mover, true});
+    };
+    ASSERT_TRUE(wait([&](const auto& log) { return moved(log) != log.cend(); })) << "move " << move;
+    std::lock_guard lock(mutex);
+    const auto others = std::count_if(frames.cbegin() + before, moved(frames),
+                                      [&](const auto& frame) { return frame.first != mover; });
+    EXPECT_LE(others, 2) << "move " << move << ": frames of other sessions before the moved one's";
+  }
+  for (const auto id : ids) service.close_session(id);
 }
 
 }  // namespace
