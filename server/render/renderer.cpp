@@ -5,14 +5,33 @@
 
 #include "render/accumulation_file.h"
 #include "render/relative_error.h"
+#include "scene/scene_isometry.h"
 
 namespace geodesic {
+namespace {
+
+// How far the camera may go from the frame's centre before a new frame pays: float keeps about
+// u e^(2 r) of a direction in H3 (3e-6 at r = 2), and u r of a position in E3.
+double frame_reach(GeometryKind k) { return k == GeometryKind::Hyperbolic ? 2 : 100; }
+
+bool without_quotient(GeometryKind k, const std::vector<Cell>& cells) {
+  return k != GeometryKind::Spherical && cells.size() == 1 && cells[0].faces.empty();
+}
+
+}  // namespace
+
 Renderer::Renderer(VulkanContext& ctx, const Scene& scene, BackendKind backend,
                    PipelineVariant variant)
     : ctx_(ctx),
       geometry_(scene.geometry),
       cells_(build_cells(scene)),
-      resources_(ctx, scene, variant),
+      camera_relative_(without_quotient(geometry_, cells_)),
+      frame_(camera_relative_ ? model::reorthonormalize(geometry_, scene.camera.pose)
+                              : Mat4::identity()),
+      resources_(ctx,
+                 camera_relative_ ? moved_scene(scene, model::inverse_isometry(geometry_, frame_))
+                                  : scene,
+                 variant),
       backend_(make_backend(backend, ctx, resources_)) {}
 
 void Renderer::add_samples(uint32_t samples) {
@@ -34,10 +53,22 @@ void Renderer::reset() {
 }
 
 Mat4 Renderer::set_view(const Mat4& camera_pose, int width, int height) {
-  const CameraPlacement placed = place_camera(geometry_, cells_, camera_pose);
-  resources_.set_view(placed.pose, placed.cell, uint32_t(width), uint32_t(height));
+  if (!camera_relative_) {
+    const CameraPlacement placed = place_camera(geometry_, cells_, camera_pose);
+    resources_.set_view(placed.pose, placed.cell, uint32_t(width), uint32_t(height));
+    samples_ = 0;
+    return placed.pose;
+  }
+  const Mat4 local = model::inverse_isometry(geometry_, frame_) * camera_pose;
+  resources_.set_view(model::reorthonormalize(geometry_, local), 0, uint32_t(width), uint32_t(height));
   samples_ = 0;
-  return placed.pose;
+  return model::reorthonormalize(geometry_, camera_pose);
+}
+
+bool Renderer::frame_outgrown(const Mat4& camera_pose) const {
+  if (!camera_relative_) return false;
+  const Vec4 from = frame_ * model::origin(), to = camera_pose * model::origin();
+  return model::geodesic_distance(geometry_, from, to) > frame_reach(geometry_);
 }
 
 void Renderer::set_max_depth(int max_depth) {

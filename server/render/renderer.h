@@ -43,6 +43,13 @@ class Renderer {
   // A new camera isometry (carried into the fundamental domain) and a resolution no larger
   // than the scene's; starts over. Returns the pose as placed.
   Mat4 set_view(const Mat4& camera_pose, int width, int height);
+  // In a space without a quotient (E3, H3: one chart without faces) the renderer works in a
+  // frame centred on the camera it was built for: the scene is moved by the frame's inverse in
+  // double before anything is stored in float, so an image does not depend on where the whole
+  // scene sits (docs/numerics.md). Poses in and out are the scene's. True when `camera_pose`
+  // has strayed so far from the frame's centre that a renderer built there should replace
+  // this one (a walking camera: render/render_service.h).
+  bool frame_outgrown(const Mat4& camera_pose) const;
   void set_max_depth(int max_depth);
   int width() const { return int(resources_.width()); }
   int height() const { return int(resources_.height()); }
@@ -70,6 +77,8 @@ class Renderer {
   VulkanContext& ctx_;
   GeometryKind geometry_;
   std::vector<Cell> cells_;
+  bool camera_relative_;
+  Mat4 frame_;  // the scene's coordinates of the frame the device works in
   SceneResources resources_;
   std::unique_ptr<TraceBackend> backend_;
   uint32_t samples_ = 0;
