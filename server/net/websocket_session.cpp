@@ -198,8 +198,10 @@ void WebSocketSession::handle_message(const std::string& text) {
   }
   const OpenRequest* open = std::get_if<OpenRequest>(&message);
   const auto* settings = std::get_if<SessionSettings>(&message);
+  const auto* motion = std::get_if<CameraMotion>(&message);
   try {
-    if (context_.preparation && (open || (settings && !render.settings_fit(*id_, *settings))))
+    if (context_.preparation && (open || (settings && !render.settings_fit(*id_, *settings)) ||
+                                 (motion && render.move_outgrows_frame(*id_, *motion))))
       return prepare(std::move(message));
     if (open) {
       send_text(scene_message(
@@ -207,7 +209,7 @@ void WebSocketSession::handle_message(const std::string& text) {
           : open->generators ? render.load_scene_document(
                                    *id_, generator_text_scene(*open->generators, "generators"))
                              : render.load_scene_document(*id_, *open->document)));
-    } else if (const auto* motion = std::get_if<CameraMotion>(&message)) {
+    } else if (motion) {
       render.move_camera(*id_, *motion);
     } else {
       render.apply_settings(*id_, *settings);
@@ -224,7 +226,9 @@ void WebSocketSession::handle_message(const std::string& text) {
 
 // The scene (bundled scene, document, generator text) is parsed and its group enumerated under
 // the pool's time budget, and its renderer built, on the preparation pool, then installed here;
-// no further message is read meanwhile, so messages keep their order while frames go on.
+// so are a renderer for larger settings and one centred on a camera that walked out of its
+// renderer's frame. No further message is read meanwhile, so messages keep their order while
+// frames go on.
 void WebSocketSession::prepare(ClientMessage message) {
   preparing_ = true;
   const bool queued = context_.preparation->submit([self = shared_from_this(), message,
@@ -233,7 +237,9 @@ void WebSocketSession::prepare(ClientMessage message) {
     const auto* open = std::get_if<OpenRequest>(&message);
     try {
       const RenderService& render = self->context_.render;
-      if (!open) {
+      if (const auto* motion = std::get_if<CameraMotion>(&message)) {
+        prepared.scene = render.prepare_move(id, *motion);
+      } else if (!open) {
         prepared.scene = render.prepare_settings(id, std::get<SessionSettings>(message));
       } else if (open->scene) {
         prepared.scene = render.prepare_bundled_scene(*open->scene);
@@ -272,6 +278,9 @@ void WebSocketSession::on_prepared(Prepared prepared) {
       } else {
         if (open) {
           send_text(scene_message(render.install_scene(*id_, std::move(*prepared.scene))));
+        } else if (const auto* motion = std::get_if<CameraMotion>(&prepared.message)) {
+          render.move_camera(*id_, *motion);
+          render.rebase(*id_, std::move(*prepared.scene));
         } else {
           if (prepared.scene) render.install_scene(*id_, std::move(*prepared.scene));
           render.apply_settings(*id_, std::get<SessionSettings>(prepared.message));

@@ -1,249 +1,21 @@
 #include "render/render_service.h"
 
-#include "render/pipeline_cache.h"
-
 #include <algorithm>
-#include <atomic>
-#include <cmath>
-#include <chrono>
-#include <condition_variable>
-#include <cstdio>
-#include <deque>
 #include <filesystem>
-#include <map>
-#include <mutex>
 #include <stdexcept>
-#include <thread>
 #include <utility>
 
-#include "render/jpeg_encoder.h"
-#include "render/render_session.h"
-#include "render/renderer.h"
-#include "render/session_rota.h"
-#include "render/vulkan_context.h"
+#include "render/pipeline_cache.h"
+#include "render/render_service_impl.h"
+#include "scene/camera_motion.h"
 #include "scene/scene_loader.h"
 
 namespace geodesic {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-constexpr auto kSlice = std::chrono::duration_cast<Clock::duration>(
-    std::chrono::duration<double>(RenderService::kSliceSeconds));
-
-// After a device loss, a new device is tried at most this often.
-constexpr auto kDeviceRetry = std::chrono::seconds(1);
-
-double seconds_since(Clock::time_point t) {
-  return std::chrono::duration<double>(Clock::now() - t).count();
-}
-
-}  // namespace
 
 PreparedScene::PreparedScene() = default;
 PreparedScene::~PreparedScene() = default;
 PreparedScene::PreparedScene(PreparedScene&&) noexcept = default;
 PreparedScene& PreparedScene::operator=(PreparedScene&&) noexcept = default;
-
-using Session = RenderSession;
-
-struct RenderService::Impl {
-  const std::string device_selector;
-  std::unique_ptr<VulkanContext> ctx;
-  std::filesystem::path pipeline_cache_dir;  // kept for a replacement device
-  // Devices lost so far, kept until the service ends: render jobs may still hold renderers made
-  // on them, which free their objects through them.
-  std::vector<std::unique_ptr<VulkanContext>> lost_devices;
-  Clock::time_point next_device_attempt;
-  std::string scene_dir;
-  ServiceLimits limits;
-  JpegEncoder encoder;
-
-  mutable std::mutex mutex;  // guards everything below and all rendering
-  // Callers waiting for the mutex: the render thread steps aside for them between slices, so
-  // a move, a new scene or /metrics waits at most one slice.
-  mutable std::atomic<int> waiting{0};
-  std::condition_variable wake;
-  // Notified when the render thread has replaced a lost device.
-  mutable std::condition_variable replaced;
-  // Background callers (run_background) wait in arrival order for a turn; `granted` is the
-  // ticket holding the device, 0 when the render thread has it.
-  std::condition_variable background_turn;
-  std::deque<uint64_t> background_queue;
-  uint64_t next_ticket = 1, granted = 0;
-  SessionRota::Sessions sessions;
-  SessionId next_id = 1;
-  SessionRota rota;
-  bool stopping = false;
-  // Callers of run_beside working on the device now: the service ends after them.
-  mutable int beside = 0;
-  mutable std::condition_variable beside_done;
-  ServiceStats stats;
-  // A copy of `stats` for stats(): /healthz and /metrics never wait for the device lock.
-  mutable std::mutex published_mutex;
-  ServiceStats published;
-  void publish() {
-    std::lock_guard hold(published_mutex);
-    published = stats;
-  }
-  double recent_samples = 0;
-  Clock::time_point window_start = Clock::now();
-  std::thread thread;
-
-  Impl(const std::string& device, std::string dir, ServiceLimits l)
-      : device_selector(device),
-        ctx(std::make_unique<VulkanContext>(device)),
-        scene_dir(std::move(dir)),
-        limits(l) {
-    stats.device = ctx->description().name;
-    publish();
-    thread = std::thread([this] { run(); });
-  }
-
-  ~Impl() {
-    {
-      std::lock_guard lock(mutex);
-      stopping = true;
-    }
-    wake.notify_all();
-    background_turn.notify_all();
-    replaced.notify_all();
-    thread.join();
-    std::unique_lock lock(mutex);
-    beside_done.wait(lock, [this] { return beside == 0; });
-  }
-
-  std::unique_lock<std::mutex> lock() const {
-    ++waiting;
-    std::unique_lock<std::mutex> held(mutex);
-    --waiting;
-    return held;
-  }
-
-  Session& find(SessionId id) {
-    auto it = sessions.find(id);
-    if (it == sessions.end()) throw std::invalid_argument("session: no such session");
-    return *it->second;
-  }
-
-  void check_limits(const Scene& scene) const {
-    if (scene.render.width > limits.max_width)
-      throw SceneError("render.width: must be <= " + std::to_string(limits.max_width) + " on this server");
-    if (scene.render.height > limits.max_height)
-      throw SceneError("render.height: must be <= " + std::to_string(limits.max_height) + " on this server");
-    if (scene.render.max_depth > limits.max_depth)
-      throw SceneError("render.max_depth: must be <= " + std::to_string(limits.max_depth) + " on this server");
-  }
-
-  // True when `renderer` was built on the current device (not on one lost since).
-  bool current(const Renderer& renderer) const { return &renderer.context() == ctx.get(); }
-
-  // The render thread: one slice at a time, to the session the rota names.
-  void run() {
-    std::unique_lock lock(mutex);
-    while (!stopping) {
-      // A session's or a job's submission lost the device: replace it before anyone renders on
-      // the lost one (which would fail whichever session came next).
-      if (ctx->lost()) replace_lost_device();
-      auto it = rota.next(sessions);
-      if (it == sessions.end()) {
-        // Between rounds: a background turn, or a pause when there is nothing to do.
-        const bool handed_over = hand_over_background(lock);
-        if (ctx->lost()) replace_lost_device();
-        it = rota.next(sessions);
-        if (it == sessions.end() && !handed_over)
-          wake.wait_for(lock, std::chrono::milliseconds(50));
-      }
-      Clock::duration refining{};  // a slice that no one waits for
-      if (it != sessions.end()) {
-        stats.queue_depth = int(sessions.size()) - 1;
-        const auto slice_start = Clock::now();
-        try {
-          serve(*it->second);
-        } catch (const std::exception& e) {  // its renderer may be half-way through a pass
-          fail(it->first, std::string("render: ") + e.what());
-        }
-        if (!rota.out_of_turn()) refining = Clock::now() - slice_start;
-      }
-      // A scene being prepared beside (a client waits for it, on threads below this one's
-      // priority) gets the processor for as long again as a refining slice took.
-      const auto step_aside = beside > 0 ? std::min(refining, kSlice) : Clock::duration{};
-      // Let waiting callers (moves, new scenes) in between slices.
-      publish();
-      lock.unlock();
-      std::this_thread::sleep_for(step_aside);
-      for (int spins = 0; waiting.load() > 0 && spins < 100; ++spins)
-        std::this_thread::sleep_for(std::chrono::microseconds(100));
-      lock.lock();
-    }
-  }
-
-  // Closes a session whose render failed; its client hears why.
-  void fail(SessionId id, const std::string& reason) {
-    auto session = sessions.extract(id);
-    stats.sessions = int(sessions.size());
-    std::fprintf(stderr, "geodesic: session %llu closed: %s\n",
-                 static_cast<unsigned long long>(id), reason.c_str());
-    if (session.mapped()->on_failure) session.mapped()->on_failure(reason);
-  }
-
-  // A lost device can only have its objects destroyed: the sessions' renderers go, a new device
-  // is made with the same selector, and every session gets a new renderer on it at its own
-  // scene, view and settings (accumulation starts over). Render jobs find their renderers'
-  // device lost at their next turn and start over from their checkpoints (jobs/job_runner.h).
-  void replace_lost_device() {
-    if (Clock::now() < next_device_attempt) return;
-    next_device_attempt = Clock::now() + kDeviceRetry;
-    std::unique_ptr<VulkanContext> fresh;
-    try {
-      fresh = std::make_unique<VulkanContext>(device_selector);
-      fresh->pipeline_cache().set_directory(pipeline_cache_dir);
-    } catch (const std::exception& e) {  // sessions fail on the lost one until a retry works
-      std::fprintf(stderr, "geodesic: Vulkan device lost, no new one yet: %s\n", e.what());
-      return;
-    }
-    for (auto& [id, s] : sessions) s->renderer.reset();
-    lost_devices.push_back(std::exchange(ctx, std::move(fresh)));
-    replaced.notify_all();
-    std::fprintf(stderr, "geodesic: Vulkan device lost; rendering on a new %s device\n",
-                 ctx->description().name.c_str());
-    std::vector<std::pair<SessionId, std::string>> failed;
-    for (auto& [id, s] : sessions) {
-      try {
-        s->renderer = std::make_unique<Renderer>(*ctx, s->scene);
-        s->restart(false);
-      } catch (const std::exception& e) {
-        failed.emplace_back(id, std::string("render: on the new device: ") + e.what());
-      }
-    }
-    for (const auto& [id, reason] : failed) fail(id, reason);
-  }
-
-  // Gives the device to the first background caller for one turn unless a session is moving;
-  // true when one had it.
-  bool hand_over_background(std::unique_lock<std::mutex>& lock) {
-    if (background_queue.empty()) return false;
-    for (const auto& [id, s] : sessions)
-      if (s->moving) return false;
-    granted = background_queue.front();
-    background_queue.pop_front();
-    background_turn.notify_all();
-    background_turn.wait(lock, [this] { return granted == 0; });
-    return true;
-  }
-
-  // One slice of the session's pass; its frame goes out when the pass is complete.
-  void serve(Session& s) {
-    auto frame = s.serve(encoder, stats, recent_samples);
-    const double window = seconds_since(window_start);
-    if (window > 1.0) {
-      stats.samples_per_second = recent_samples / window;
-      recent_samples = 0;
-      window_start = Clock::now();
-    }
-    if (frame) s.on_frame(std::move(frame));
-  }
-};
 
 RenderService::RenderService(const std::string& device, std::string scene_dir,
                              ServiceLimits limits)
@@ -370,8 +142,36 @@ void RenderService::move_camera(SessionId id, const CameraMotion& motion) {
   if (!(model::isometry_error(s.scene.geometry, pose) < 1e-6))
     throw std::invalid_argument("move: the camera would leave the space's model (a step too long)");
   s.pose = pose;
-  s.last_move = Clock::now();
+  s.last_move = Impl::Clock::now();
   s.restart(true);
+}
+
+bool RenderService::move_outgrows_frame(SessionId id, const CameraMotion& motion) const {
+  auto lock = impl_->lock();
+  const Session& s = impl_->find(id);
+  return s.renderer->frame_outgrown(apply_motion(s.scene.geometry, s.pose, motion));
+}
+
+PreparedScene RenderService::prepare_move(SessionId id, const CameraMotion& motion) const {
+  Scene scene;
+  std::string name;
+  {
+    auto lock = impl_->lock();
+    const Session& s = impl_->find(id);
+    scene = s.scene;
+    name = s.scene_name;
+    scene.camera.pose = apply_motion(s.scene.geometry, s.pose, motion);
+  }
+  return prepare_scene(std::move(scene), std::move(name));
+}
+
+void RenderService::rebase(SessionId id, PreparedScene&& prepared) {
+  auto lock = impl_->lock();
+  Session& s = impl_->find(id);
+  if (!impl_->current(*prepared.renderer)) return;  // the device was lost: the old frame serves
+  auto old = std::move(s.renderer);                 // freed after the lock
+  s.rebase(std::move(prepared.renderer));
+  lock.unlock();
 }
 
 SceneInfo RenderService::apply_settings(SessionId id, const SessionSettings& settings) {
@@ -461,7 +261,7 @@ bool RenderService::run_beside(const std::function<void(VulkanContext&)>& work) 
     // to be made; then on the lost one, whose submissions fail with the reason).
     if (impl.ctx->lost()) {
       impl.wake.notify_all();
-      impl.replaced.wait_for(lock, 2 * kDeviceRetry,
+      impl.replaced.wait_for(lock, 2 * Impl::kDeviceRetry,
                              [&] { return impl.stopping || !impl.ctx->lost(); });
     }
     if (impl.stopping) return false;

@@ -142,6 +142,15 @@ class RenderService {
   // A prepared scene: cheap (a renderer built on a device lost since is built again here).
   SceneInfo install_scene(SessionId id, PreparedScene&& scene);
   void move_camera(SessionId id, const CameraMotion& motion);
+  // In a space without a quotient the renderer works in a frame centred on the camera it was
+  // built at (render/renderer.h). True when `motion` takes the camera so far from it that a
+  // renderer built at the moved camera should take over: prepare_move builds it, beside the
+  // rendering; move the camera, then rebase(id, prepared).
+  bool move_outgrows_frame(SessionId id, const CameraMotion& motion) const;
+  PreparedScene prepare_move(SessionId id, const CameraMotion& motion) const;
+  // The session goes on with the prepared renderer, its scene, view and settings unchanged
+  // (accumulation starts over, as after any move).
+  void rebase(SessionId id, PreparedScene&& prepared);
   // Settings larger than the session's buffers need a new renderer, built on the calling
   // thread; prepare_settings builds it beforehand (nullopt when the buffers are large enough):
   // install it, then apply the settings.

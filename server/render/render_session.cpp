@@ -38,6 +38,13 @@ void RenderSession::adopt(PreparedScene prepared) {
   restart(false);
 }
 
+void RenderSession::rebase(std::unique_ptr<Renderer> rebuilt) {
+  renderer = std::move(rebuilt);
+  non_finite = truncated = 0;  // the new renderer's counters start from zero
+  last_move = Clock::now();
+  restart(true);
+}
+
 void RenderSession::restart(bool now_moving) {
   moving = now_moving;
   int divisor = 1;

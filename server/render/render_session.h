@@ -41,6 +41,9 @@ struct RenderSession {
 
   // A new scene, its renderer built: the camera goes to the scene's pose, at full resolution.
   void adopt(PreparedScene prepared);
+  // A renderer of the same scene built at the camera (Renderer::frame_outgrown): the view,
+  // settings and counters go on; the accumulation starts over as after a move.
+  void rebase(std::unique_ptr<Renderer> rebuilt);
   // A new view: reduced resolution while moving, full when still; accumulation starts over.
   void restart(bool moving);
   // One slice of the current pass (after a move, full resolution once the camera has settled);

@@ -1,6 +1,7 @@
 // The daemon's render service without the network: sessions, progressive frames, moves,
 // settings and bad input.
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <condition_variable>
 #include <mutex>
@@ -96,6 +97,41 @@ TEST(RenderService, SessionsShareTheDeviceFairly) {
   service.close_session(first);
   EXPECT_EQ(service.stats().sessions, 1);
   service.close_session(second);
+}
+
+// Walking far in plain H3: a move that takes the camera more than 2 units from the renderer's
+// frame is due a renderer built at the camera; after it, the frames show the moved pose and the
+// next small step is not due one.
+TEST(RenderService, AWalkOutOfTheFrameGetsARendererCentredOnTheCamera) {
+  FrameLog log;  // outlives the service, whose render thread delivers into it until it ends
+  RenderService service("", source_path("scenes").string());
+  const auto id = service.open_session(log.callback());
+  const auto document = nlohmann::ordered_json::parse(R"({"geometry": "hyperbolic",
+    "camera": {"position": [0, 0, 2], "look_at": [0, 0, 0]},
+    "materials": {"m": {"diffuse": 0.5}},
+    "objects": [{"type": "sphere", "material": "m", "center": [0, 0, -4], "radius": 0.5}],
+    "lights": [{"type": "point", "position": [0, 2, -3], "intensity": 5}]})");
+  service.load_scene_document(id, document);
+  service.apply_settings(id, {.width = 32, .height = 32});
+  const Mat4 start = parse_scene(document, source_path("scenes")).camera.pose;
+
+  const CameraMotion walk{.forward = 2.5}, step{.forward = 0.1};
+  EXPECT_FALSE(service.move_outgrows_frame(id, step));
+  ASSERT_TRUE(service.move_outgrows_frame(id, walk));
+  PreparedScene centred = service.prepare_move(id, walk);
+  service.move_camera(id, walk);
+  service.rebase(id, std::move(centred));
+  EXPECT_FALSE(service.move_outgrows_frame(id, step));
+
+  const Mat4 walked = apply_motion(GeometryKind::Hyperbolic, start, walk);
+  const auto frame = log.wait_for([&](const FrameInfo& f) {
+    return f.spp >= 4 && !f.moving && std::abs(f.camera.m[3][3] - walked.m[3][3]) < 1e-6;
+  });
+  ASSERT_TRUE(frame);
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) EXPECT_NEAR(frame->info.camera.m[i][j], walked.m[i][j], 1e-9);
+  EXPECT_EQ(frame->info.non_finite_samples, 0u);
+  EXPECT_EQ(frame->info.width, 32);
 }
 
 // A moved session's first frame goes out of turn: beside seven busy sessions it waits for at
