@@ -77,10 +77,10 @@ struct SessionLog {
   std::string failure;
 };
 
-// The sessions open one after another, each once the one before has its first frame: opening
-// builds a renderer (its pipeline compiled) under the device lock on one of the daemon's two
-// I/O threads, and 50 arriving at once keep handshakes waiting past the client's 10 s deadline
-// (docs/reliability.md). Then all start together: `start` and `end` are set before `go` opens.
+// The sessions open one after another, each once the one before has its first frame, so that
+// "open to first frame" measures one opening beside every session already streaming (50 at
+// once would measure the preparation pool's queue). Then all start together: `start` and `end`
+// are set before `go` opens.
 struct Schedule {
   explicit Schedule(int sessions) : ready(sessions) {}
   std::atomic<int> opened{0};
