@@ -6,6 +6,7 @@
 
 #include "render/chart_bounds.h"
 #include "render/spatial_order.h"
+#include "render/tube_culling.h"
 
 namespace geodesic {
 namespace {
@@ -93,6 +94,41 @@ void pack_cell_spheres(const Scene& scene, const Cell& cell, uint32_t cell_index
   }
 }
 
+// The edge tubes in the cell's chart: their ends mapped there, the chart radius kept (exact for
+// a domain charted about the origin in one cell, as every bundled quotient is; a domain charted
+// in pieces bends a tube's surface where it changes chart by a fraction of its radius). Sorted
+// by the first of the two faces that hold the axis, each face given its range, those without
+// such faces last (render/tube_culling.h). Fills the cell's tube fields.
+void pack_cell_tubes(const Scene& scene, const Cell& cell, GpuCell& packed, PackedScene& out) {
+  const GeometryKind k = scene.geometry;
+  std::vector<GpuTube> tubes;
+  for (const EdgeTube& tube : scene.tubes) {
+    const Vec4 a = cell.chart_isometry * model::lift(k, tube.a);
+    const Vec4 b = cell.chart_isometry * model::lift(k, tube.b);
+    if (a.w <= 1e-6 || b.w <= 1e-6) continue;  // not on the chart's side
+    const auto [face_a, face_b] = faces_holding(cell, a.xyz() / a.w, b.xyz() / b.w);
+    tubes.push_back({to_float4(a.xyz() / a.w, tube.radius), to_float4(b.xyz() / b.w),
+                     tube.material, face_a, face_b, 0});
+    packed.tube_reach = std::max(packed.tube_reach, float(tube.radius));
+  }
+  std::stable_sort(tubes.begin(), tubes.end(),
+                   [](const GpuTube& x, const GpuTube& y) { return x.face_a < y.face_a; });
+  if (tubes.size() > 0xFFFF) throw SceneError("more than 65535 edge tubes in one cell");
+  packed.tube_begin = uint32_t(out.tubes.size());
+  packed.tube_count = uint32_t(tubes.size());
+  packed.always_begin = packed.tube_count;
+  for (uint32_t i = 0; i < tubes.size(); ++i) {
+    if (tubes[i].face_a == kAlwaysTest) {
+      packed.always_begin = std::min(packed.always_begin, i);
+      continue;
+    }
+    uint32_t& range = out.faces[cell.face_begin + tubes[i].face_a].tubes;
+    if (range == 0) range = i;
+    range += 1u << 16;
+  }
+  out.tubes.insert(out.tubes.end(), tubes.begin(), tubes.end());
+}
+
 // A cell's triangles (from `first`) and its sphere refs (from `first_ref`) in median-split
 // order of their chart boxes' centres (render/spatial_order.h). Triangle vertices are not shared, so
 // positions and normals move with their triangle and the indices stay 0, 1, 2, ...
@@ -150,11 +186,13 @@ PackedScene pack_scene(const Scene& scene) {
   const std::vector<Cell> cells = build_cells(scene);
   for (uint32_t c = 0; c < cells.size(); ++c) {
     const Cell& cell = cells[c];
-    out.cells.push_back({cell.chart_isometry.to_glsl(), uint32_t(cell.face_begin),
-                         uint32_t(cell.faces.size()), {0, 0}});
     for (const CellFace& f : cell.faces)
       out.faces.push_back({to_float4(f.normal, f.delta), f.pairing.to_glsl(),
                            uint32_t(f.target_cell), uint32_t(f.partner), uint32_t(f.internal), 0});
+    GpuCell packed{cell.chart_isometry.to_glsl(), uint32_t(cell.face_begin),
+                   uint32_t(cell.faces.size()), 0, 0, 0, 0, {}};
+    pack_cell_tubes(scene, cell, packed, out);
+    out.cells.push_back(packed);
     CellGeometry g;
     g.first_triangle = uint32_t(out.triangles.size());
     pack_cell_triangles(scene, emitting, cell, c, out);

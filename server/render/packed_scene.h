@@ -1,6 +1,7 @@
 // The scene flattened into the arrays the shaders read (layouts match
 // shaders/common/scene_data.glsl, std430): model-space spheres and lights, and for every cell
-// of the chart atlas its triangles (in the cell's chart) and sphere bounding boxes. Pure data:
+// of the chart atlas its triangles and edge tubes (in the cell's chart) and sphere bounding
+// boxes. Pure data:
 // built and tested without a device.
 #pragma once
 
@@ -55,7 +56,23 @@ struct GpuCell {
   Float16 chart_isometry;  // column-major
   uint32_t face_begin;
   uint32_t face_count;
+  uint32_t tube_begin;  // its edge tubes: tubes[tube_begin, tube_begin + tube_count)
+  uint32_t tube_count;
+  float tube_reach;     // the largest radius among them
+  // Its tubes sorted by their first face (GpuCellFace::tubes), then those always tested:
+  // tubes[tube_begin + always_begin, tube_begin + tube_count).
+  uint32_t always_begin;
   uint32_t padding[2];
+};
+
+// An edge tube's capsule in its cell's chart (scene.h EdgeTube), and two of the cell's faces
+// whose planes hold its axis (render/tube_culling.h).
+struct GpuTube {
+  Float4 a;  // xyz: one end of the axis; w: chart radius
+  Float4 b;  // xyz: the other end
+  uint32_t material;
+  uint32_t face_a, face_b;  // local face indices; kAlwaysTest when no two faces below 32 do
+  uint32_t padding;
 };
 
 struct GpuCellFace {
@@ -64,7 +81,8 @@ struct GpuCellFace {
   uint32_t target_cell;
   uint32_t partner;
   uint32_t internal;  // 1: a wall between pieces, not counted as a crossing (INTERNAL_WALLS)
-  uint32_t padding;
+  // The cell's tubes whose first face is this one: local offset | count << 16 (tube_culling.h).
+  uint32_t tubes;
 };
 
 struct GpuAabb {
@@ -94,6 +112,7 @@ struct PackedScene {
   std::vector<Float4> normals;              // one per position (zero when flat)
   std::vector<uint32_t> indices;            // three per triangle, into positions
   std::vector<GpuTriangle> triangles;       // grouped by cell
+  std::vector<GpuTube> tubes;               // grouped by cell (GpuCell ranges)
   uint32_t camera_cell = 0;
   Mat4 camera_pose;                         // carried into its cell
 };

@@ -79,6 +79,7 @@ PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
   });
   f.spheres = !packed.sphere_refs.empty();
   f.triangles = !packed.triangles.empty();
+  f.tubes = !packed.tubes.empty();
   f.smooth_normals = std::any_of(packed.triangles.begin(), packed.triangles.end(),
                                  [](const GpuTriangle& t) { return t.smooth != 0; });
   f.paper = scene.render.lighting == LightingModel::Paper;
@@ -109,6 +110,7 @@ PipelineFeatures all_features(GeometryKind geometry) {
   f.variant = PipelineVariant::AllFeatures;
   f.crossing = Crossing::Isometry;
   f.multiple_charts = f.spheres = f.triangles = f.smooth_normals = f.internal_walls = true;
+  f.tubes = true;
   f.paper = f.physical = f.point_lights = f.light_sampling = true;
   f.sphere_emitters = f.triangle_emitters = f.transmission = true;
   return f;
@@ -133,6 +135,7 @@ std::vector<std::string> PipelineFeatures::defines() const {
   flag(multiple_charts, "MULTIPLE_CHARTS");
   flag(spheres, "HAS_SPHERES");
   flag(triangles, "HAS_TRIANGLES");
+  flag(tubes && crossing != Crossing::None, "HAS_TUBES");
   flag(smooth_normals, "HAS_SMOOTH_NORMALS");
   flag(paper, "LIGHTING_PAPER");
   flag(physical, "LIGHTING_PHYSICAL");
@@ -162,6 +165,7 @@ std::vector<uint32_t> PipelineFeatures::bindings() const {
   add(spheres, {kSpheresBinding, kSphereRefsBinding});
   add(triangles, {kPositionsBinding, kIndicesBinding, kTrianglesBinding});
   add(smooth_normals, {kNormalsBinding});
+  add(tubes && crossing != Crossing::None, {kTubesBinding});
   add(paper && point_lights, {kLightsBinding});
   add(crossing != Crossing::None || multiple_charts, {kCellsBinding});
   add(crossing != Crossing::None, {kCellFacesBinding});
@@ -186,6 +190,7 @@ std::string PipelineFeatures::summary() const {
   word(multiple_charts, "charts");
   word(spheres, "spheres");
   word(triangles, "triangles");
+  word(tubes, "tubes");
   word(smooth_normals, "smooth-normals");
   word(true, paper ? "paper" : "physical");
   word(point_lights, paper ? "point-lights(" + std::to_string(point_light_count) + ")"

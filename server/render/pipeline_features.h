@@ -31,6 +31,7 @@ struct PipelineFeatures {
   Crossing crossing = Crossing::None;
   bool multiple_charts = false;  // cells charted about different points (S3's atlas)
   bool spheres = false, triangles = false, smooth_normals = false;
+  bool tubes = false;  // the domain's edge tubes, intersected analytically
   bool paper = false, physical = false;  // lighting models compiled in
   bool point_lights = false;             // point-light code (eq. 2.2 or point emitters)
   bool light_sampling = false;           // next-event estimation and MIS

@@ -11,7 +11,7 @@ enum SceneBinding : uint32_t {
   kSceneBinding = 0, kAccumulationBinding, kFrameBinding, kSpheresBinding, kMaterialsBinding,
   kLightsBinding, kPositionsBinding, kNormalsBinding, kIndicesBinding, kTrianglesBinding,
   kRayCountsBinding, kSphereRefsBinding, kCellsBinding, kCellFacesBinding, kDiagnosticsBinding,
-  kEmittersBinding, kLightImagesBinding, kSceneBindingCount
+  kEmittersBinding, kLightImagesBinding, kTubesBinding, kSceneBindingCount
 };
 
 }  // namespace geodesic

@@ -74,6 +74,7 @@ SceneResources::SceneResources(VulkanContext& ctx, const Scene& scene, PipelineV
   upload(kCellFacesBinding, faces_, packed_.faces);
   upload(kEmittersBinding, emitters_, packed_.emitters);
   upload(kLightImagesBinding, light_images_, packed_.light_images);
+  upload(kTubesBinding, tubes_, packed_.tubes);
   diagnostics_ = GpuBuffer(ctx, sizeof(DeviceDiagnostics), kStorage);
   std::memset(diagnostics_.mapped(), 0, sizeof(DeviceDiagnostics));
   create_descriptors();
@@ -162,7 +163,7 @@ void SceneResources::create_descriptors() {
   const GpuBuffer* buffers[kSceneBindingCount] = {
       nullptr,     &accumulation_, &frame_,     &spheres_,     &materials_,   &lights_,
       &positions_, &normals_,      &indices_,   &triangles_,   &ray_counts_,  &sphere_refs_,
-      &cells_,     &faces_,        &diagnostics_, &emitters_,  &light_images_};
+      &cells_,     &faces_,        &diagnostics_, &emitters_,  &light_images_, &tubes_};
   std::vector<VkDescriptorBufferInfo> infos(count);
   std::vector<VkWriteDescriptorSet> writes(count);
   for (uint32_t i = 0; i < count; ++i) {

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
-#include <numbers>
 #include <string>
 
 #include "scene/scene.h"
@@ -122,49 +121,19 @@ std::vector<int> edge_faces(const Polyhedron& p, int e) {
   return common;
 }
 
-// Tube sections are at most this many diameters long: a long thin triangle's bounding box spans
-// the domain diagonally, and an acceleration structure's boxes around it would too; short
-// sections keep every box tight around its tube.
-constexpr double kSectionDiameters = 2;
-
-TriangleMesh make_edge_tubes(GeometryKind kind, const Polyhedron& p, double radius,
-                             uint32_t material) {
-  constexpr int kSides = 6;
-  TriangleMesh mesh;
-  mesh.material = material;
+std::vector<EdgeTube> make_edge_tubes(GeometryKind kind, const Polyhedron& p, double radius,
+                                      uint32_t material) {
+  std::vector<EdgeTube> tubes;
   for (const auto& [ia, ib] : p.edges) {
     const Vec3 a = p.vertices[ia], b = p.vertices[ib];
-    const Vec3 d = normalize(b - a), u = perpendicular(d), v = cross(d, u);
-    const int sections =
-        std::clamp(int(std::ceil(length(b - a) / (kSectionDiameters * 2 * radius))), 1, 256);
-    const auto base = static_cast<uint32_t>(mesh.positions.size());
-    for (int ring = 0; ring <= sections; ++ring) {
-      const Vec3 centre = a + (b - a) * (double(ring) / sections);
-      for (int k = 0; k < kSides; ++k) {
-        const double t = 2 * std::numbers::pi * k / kSides;
-        const Vec3 x = centre + radius * (std::cos(t) * u + std::sin(t) * v);
-        // The Klein chart is the open unit ball: a tube poking out of it has no model points.
-        if (kind == GeometryKind::Hyperbolic && dot(x, x) >= 1)
-          throw SceneError("tubes of chart radius " + std::to_string(radius) +
-                           " leave the hyperbolic chart (|X| >= 1)");
-        mesh.positions.push_back(model::log_origin(kind, model::lift(kind, x)));
-      }
-    }
-    // Sides, ring by ring, then caps; (u, v, d) is right-handed, so k runs counter-clockwise
-    // about d.
-    for (uint32_t ring = 0; ring < uint32_t(sections); ++ring)
-      for (uint32_t k = 0; k < kSides; ++k) {
-        const uint32_t k1 = (k + 1) % kSides, r0 = base + ring * kSides, r1 = r0 + kSides;
-        mesh.indices.insert(mesh.indices.end(),
-                            {r0 + k, r0 + k1, r1 + k1, r0 + k, r1 + k1, r1 + k});
-      }
-    const uint32_t last = base + uint32_t(sections) * kSides;
-    for (uint32_t k = 1; k + 1 < kSides; ++k) {
-      mesh.indices.insert(mesh.indices.end(), {base, base + k + 1, base + k});
-      mesh.indices.insert(mesh.indices.end(), {last, last + k, last + k + 1});
-    }
+    // The Klein chart is the open unit ball: a tube poking out of it has no model points (the
+    // capsule is convex, so its ends' balls tell).
+    if (kind == GeometryKind::Hyperbolic && std::max(length(a), length(b)) + radius >= 1)
+      throw SceneError("tubes of chart radius " + std::to_string(radius) +
+                       " leave the hyperbolic chart (|X| >= 1)");
+    tubes.push_back({a, b, radius, material});
   }
-  return mesh;
+  return tubes;
 }
 
 }  // namespace geodesic

@@ -13,7 +13,7 @@
 
 namespace geodesic {
 
-struct TriangleMesh;  // scene/scene.h, which includes this header
+struct EdgeTube;  // scene/scene.h, which includes this header
 
 struct ChartPlane {
   Vec3 normal;  // outward unit normal
@@ -39,14 +39,9 @@ Polyhedron make_polyhedron(const std::vector<ChartPlane>& planes, double toleran
 // The faces (plane indices) containing both ends of edge e.
 std::vector<int> edge_faces(const Polyhedron& p, int e);
 
-// Hexagonal prisms of chart radius `radius` along every edge, capped at both ends: the paper
-// draws the dodecahedron's edges this way. Each prism is cut into sections at most two
-// diameters long (rings of six vertices), so that every triangle's bounding box is small.
-// Positions are exponential coordinates at the origin (as everywhere in TriangleMesh) of the
-// lifted chart points, so each triangle is flat in the chart. Each tube lies on an edge of the
-// domain, so the copies of the domain around that edge complete it; flat-shaded (no normals).
-// Throws SceneError (a reason without a path) when a tube leaves the Klein ball in H3.
-TriangleMesh make_edge_tubes(GeometryKind kind, const Polyhedron& p, double radius,
-                             uint32_t material);
+// The tube of chart radius `radius` along every edge (scene.h EdgeTube). Throws SceneError (a
+// reason without a path) when a tube leaves the Klein ball in H3.
+std::vector<EdgeTube> make_edge_tubes(GeometryKind kind, const Polyhedron& p, double radius,
+                                      uint32_t material);
 
 }  // namespace geodesic

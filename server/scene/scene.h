@@ -46,6 +46,15 @@ struct TriangleMesh {
   uint32_t material = 0;
 };
 
+// The fundamental domain's edges drawn as tubes ("domain_edges"; the paper draws the
+// dodecahedron's edges so): the capsule of chart radius `radius` about each edge, in the
+// domain's chart about the origin (geometry/capsule.h), intersected analytically by the
+// tracer. Only in quotients; the copies of the domain around an edge complete its tube.
+struct EdgeTube {
+  Vec3 a, b;  // the edge's ends, chart coordinates
+  double radius = 0;
+  uint32_t material = 0;
+};
 struct PointLight {
   Vec3 position;
   Vec3 intensity;  // RGB
@@ -109,6 +118,7 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<Sphere> spheres;
   std::vector<TriangleMesh> meshes;
+  std::vector<EdgeTube> tubes;
   std::vector<PointLight> lights;
   RenderSettings render;
 };

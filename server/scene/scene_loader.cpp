@@ -330,9 +330,16 @@ void read_object(const JsonNode& node, const MaterialTable& materials, const Doc
   }
   if (type == "domain_edges") {
     if (scene.manifold.faces.empty()) node.fail("\"domain_edges\" needs a manifold");
-    TriangleMesh tubes = make_edge_tubes(scene.geometry, scene.manifold.domain,
-                                         read_positive(node.at("radius")), material);
-    scene.meshes.push_back(std::move(tubes));
+    const Vec3 emission = scene.materials[material].emission;
+    if (std::max({emission.x, emission.y, emission.z}) > 0)
+      node.at("material").fail("must not emit: edge tubes are not light sources");
+    const double radius = read_positive(node.at("radius"));
+    try {
+      const auto tubes = make_edge_tubes(scene.geometry, scene.manifold.domain, radius, material);
+      scene.tubes.insert(scene.tubes.end(), tubes.begin(), tubes.end());
+    } catch (const SceneError& e) {
+      node.at("radius").fail(e.what());
+    }
     return;
   }
   TriangleMesh mesh = type == "quad"      ? read_quad(node)
@@ -390,7 +397,6 @@ void check_inside_domain(const JsonNode& objects, const Scene& scene,
                                           std::to_string(f) + ")");
   }
   for (size_t m = 0; m < scene.meshes.size(); ++m) {
-    if (object_of_mesh[m] < 0) continue;
     for (const Vec3& x : scene.meshes[m].positions)
       for (size_t f = 0; f < scene.manifold.faces.size(); ++f)
         if (distance_outside(k, model::exp_origin(k, x), scene.manifold.faces[f]) > 1e-6)
@@ -422,9 +428,8 @@ Scene parse_scene(const Json& doc, const DocumentFiles& files) {
     std::vector<int> object_of_sphere, object_of_mesh;
     for (std::size_t i = 0; i < n; ++i) {
       read_object((*objects)[i], table, files, scene);
-      const bool tubes = read_string((*objects)[i].at("type")) == "domain_edges";
       object_of_sphere.resize(scene.spheres.size(), int(i));
-      object_of_mesh.resize(scene.meshes.size(), tubes ? -1 : int(i));
+      object_of_mesh.resize(scene.meshes.size(), int(i));
     }
     if (!scene.manifold.faces.empty())
       check_inside_domain(*objects, scene, object_of_sphere, object_of_mesh);

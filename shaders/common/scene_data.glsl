@@ -61,7 +61,21 @@ struct Cell {
   mat4 chartIsometry;  // model -> the cell's frame
   uint faceBegin;
   uint faceCount;
+  uint tubeBegin;  // its edge tubes: tubes[tubeBegin, tubeBegin + tubeCount)
+  uint tubeCount;
+  float tubeReach;  // the largest radius among them
+  uint alwaysBegin;  // tubes[tubeBegin + alwaysBegin, tubeBegin + tubeCount): always tested
   uint pad0, pad1;
+};
+
+// An edge tube: a capsule in its cell's chart (geometry/capsule.h) and two local faces whose
+// planes hold its axis (server/render/tube_culling.h; ~0u: always tested).
+struct Tube {
+  vec4 a;  // xyz: one end of the axis; w: chart radius
+  vec4 b;  // xyz: the other end
+  uint material;
+  uint faceA, faceB;
+  uint pad0;
 };
 
 struct CellFace {
@@ -70,7 +84,7 @@ struct CellFace {
   uint targetCell;
   uint partner;  // the face entered through
   uint internal;  // 1: a wall between pieces of one domain (not a crossing of MAX_CROSSINGS)
-  uint pad1;
+  uint tubes;     // the cell's tubes whose first face this is: local offset | count << 16
 };
 
 layout(set = 0, binding = 0) uniform accelerationStructureEXT uScene;
@@ -130,6 +144,9 @@ layout(set = 0, binding = 12, std430) readonly buffer Cells { Cell cells[]; };
 #endif
 #if defined(CELL_CROSSING)
 layout(set = 0, binding = 13, std430) readonly buffer CellFaces { CellFace cellFaces[]; };
+#endif
+#if defined(HAS_TUBES)
+layout(set = 0, binding = 17, std430) readonly buffer Tubes { Tube tubes[]; };
 #endif
 #if defined(LIGHT_SAMPLING)
 layout(set = 0, binding = 15, std430) readonly buffer Emitters { Emitter emitters[]; };

@@ -30,7 +30,7 @@ struct GeodesicRay {
   uint enteredFace;  // face it entered the cell through (~0u: none), never an exit
 };
 
-// The closest hit along one chart segment. kind: 0 none, 1 triangle, 2 sphere.
+// The closest hit along one chart segment. kind: 0 none, 1 triangle, 2 sphere, 3 edge tube.
 struct ChartHit {
   uint kind;
   uint index;       // global triangle or sphere index

@@ -4,11 +4,13 @@
 // without faces (CELL_CROSSING undefined) traces one chart segment. Walls between the pieces of
 // one domain (INTERNAL_WALLS) do not count: up to MAX_WALL_CROSSINGS of them, as a ray that
 // starts on the edge all the pieces of a lune share passes through many at once. The crossing
-// code is the pairing kind's only (PAIRING_*, server/render/pipeline_features.h).
+// code is the pairing kind's only (PAIRING_*, server/render/pipeline_features.h). Edge tubes
+// (HAS_TUBES) are tested in the chart beside the traversal (primitives/edge_tube.glsl).
 // Needs ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool any)
 // from the entry point.
 #ifndef GEODESIC_TRACER_GLSL
 #define GEODESIC_TRACER_GLSL
+#include "primitives/edge_tube.glsl"
 
 const uint NO_FACE = ~0u;
 
@@ -98,7 +100,18 @@ bool followGeodesic(inout GeodesicRay ray, float maxDistance, bool anyHit, out C
     float remaining = maxDistance - travelled;
     bool last = face == NO_FACE || remaining <= tExit;
     float sMax = remaining < tExit ? chartParameter(line.p, line.v, remaining) : sExit;
+#if defined(HAS_TUBES)
+    // A tube hit bounds the traversal: only something nearer can replace it.
+    ChartHit tube = nearestTube(ray.cell, line.o, line.d, sMax, anyHit);
+    if (tube.kind != 0u && anyHit) {
+      hit = tube;
+      return true;
+    }
+    hit = traceChart(line.o, line.d, min(sMax, tube.s), ray.cell, line.p, line.v, anyHit);
+    if (hit.kind == 0u) hit = tube;
+#else
     hit = traceChart(line.o, line.d, sMax, ray.cell, line.p, line.v, anyHit);
+#endif
     if (hit.kind != 0u) return true;
     if (last) return false;
     travelled += tExit;

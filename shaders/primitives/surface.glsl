@@ -3,6 +3,9 @@
 // points.
 #ifndef SURFACE_GLSL
 #define SURFACE_GLSL
+#if defined(HAS_TUBES)
+#include "geometry/capsule.glsl"
+#endif
 
 struct Surface {
   vec4 position;         // model point q
@@ -37,7 +40,8 @@ Surface facing(Surface s) {
   return s;
 }
 
-// The surface hit by `ray` (whose current segment produced `hit`).
+// The surface hit by `ray` (whose current segment produced `hit`): kind 1 a triangle, 2 a
+// sphere, 3 an edge tube.
 Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
   Surface s;
   s.hit = 1u;
@@ -52,6 +56,25 @@ Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
     s.material = sphere.material;
     s.emitter = sphere.emitter;
     s.t = hit.t;
+    return facing(s);
+  }
+#endif
+#if defined(HAS_TUBES)
+  if (hit.kind == 3u) {  // an edge tube: its capsule's normal in the chart, as a plane's
+    Tube tube = tubes[hit.index];
+    mat4 P = cellChartIsometry(ray.cell);
+    vec4 p = P * ray.p, v = P * ray.v;
+    vec3 x = chartPoint(p) + hit.s * chartDirection(p, v);
+    vec3 n = capsuleNormal(tube.a.xyz, tube.b.xyz, x);
+    mat4 toModel = transpose(P);  // signed permutations: P^-1 = P^T
+    vec4 qCell = liftChart(x);
+    s.position = toModel * qCell;
+    s.geometricNormal = toModel * chartPlaneNormal(qCell, n, dot(n, x));
+    s.normal = s.geometricNormal;
+    s.t = distanceFromChartParameter(p, v, hit.s);
+    s.incoming = geodesicTangent(ray.p, ray.v, s.t);
+    s.material = tube.material;
+    s.emitter = ~0u;
     return facing(s);
   }
 #endif

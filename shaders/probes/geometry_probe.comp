@@ -1,5 +1,5 @@
 #version 460
-// Test probe: runs every model-geometry, sampling and random-number routine on a buffer of
+// Test probe: runs every model-geometry, capsule, sampling and random-number routine on a buffer of
 // cases, so that tests/render/ can hold the float GLSL against the double C++ twins in
 // server/geometry/. Compiled once per geometry like every entry point. One invocation per
 // case; it computes all outputs.
@@ -10,6 +10,7 @@ layout(local_size_x = 64) in;
 #include "common/random.glsl"
 #include "common/sampling.glsl"
 #include "geometry/model.glsl"
+#include "geometry/capsule.glsl"
 
 // Layouts mirror ProbeCase and ProbeResult in tests/render/geometry_probe.h (std430).
 struct ProbeCase {
@@ -26,6 +27,8 @@ struct ProbeCase {
   vec4 colour;     // linear RGB
   vec4 uv;         // xy: two uniform numbers for the sampling routines; zw: two densities
   uvec4 rng;       // pixel, sample index, seed, pcgHash input
+  vec4 capsuleA;   // a capsule's axis: xyz one end, w radius
+  vec4 capsuleB;   // xyz the other end, w the largest chart parameter sMax
 };
 
 struct ProbeResult {
@@ -55,6 +58,8 @@ struct ProbeResult {
   vec4 draws;              // four successive rngNext from that seed
   vec4 reflected;          // reflectInChartPlane(p, plane)
   vec4 triangleSample;     // sampleUniformTriangle(uv.xy), powerHeuristic(uv.z, uv.w)
+  vec4 capsule;            // intersectCapsule(capsule, chart.xyz, normal.xyz, 0, sMax),
+                           // capsuleNormal(capsule, chart.xyz)
 };
 
 layout(std430, binding = 0) readonly buffer Cases { ProbeCase cases[]; };
@@ -89,6 +94,9 @@ void main() {
   r.chartVelocity = vec4(chartDirection(p, v), 0.0);
   r.offset = offsetFromSurface(p, v);
   r.reflected = reflectInChartPlane(p, c.plane);
+  r.capsule = vec4(intersectCapsule(c.capsuleA.xyz, c.capsuleB.xyz, c.capsuleA.w, c.chart.xyz,
+                                    c.normal.xyz, 0.0, c.capsuleB.w),
+                   capsuleNormal(c.capsuleA.xyz, c.capsuleB.xyz, c.chart.xyz));
 
   vec3 tb, bb;
   orthonormalBasis(c.normal.xyz, tb, bb);

@@ -40,8 +40,9 @@ struct ProbeCase {
   F16 isometry;
   F4 point, tangent, target, sphere, loose, params, plane, chart, normal, colour, uv;
   std::array<uint32_t, 4> rng;
+  F4 capsule_a, capsule_b;  // a capsule (xyz, radius) and (xyz, sMax) for intersectCapsule
 };
-static_assert(sizeof(ProbeCase) == 64 + 11 * 16 + 16);
+static_assert(sizeof(ProbeCase) == 64 + 11 * 16 + 16 + 2 * 16);
 
 struct ProbeResult {
   F4 scalars, chart_scalars, origin, geodesic, velocity, towards;
@@ -49,9 +50,9 @@ struct ProbeResult {
   F4 plane_normal, sphere_normal, normalized_point, normalized_tangent, chart_of_point, lifted,
       chart_velocity, offset, basis_tangent, basis_bitangent, cosine_sample;
   std::array<uint32_t, 4> hashes;
-  F4 draws, reflected, triangle_sample;
+  F4 draws, reflected, triangle_sample, capsule;
 };
-static_assert(sizeof(ProbeResult) == 6 * 16 + 3 * 64 + 11 * 16 + 4 * 16);
+static_assert(sizeof(ProbeResult) == 6 * 16 + 3 * 64 + 11 * 16 + 5 * 16);
 
 constexpr double kUnitRoundoff = FLT_EPSILON / 2;
 constexpr float kFar = 1e30f;

@@ -89,17 +89,17 @@ TEST(PipelineFeatures, EachBundledSceneGetsItsPairingKindAndPrimitives) {
   struct Expected {
     const char* scene;
     Crossing crossing;
-    bool spheres, triangles, paper;
+    bool spheres, triangles, tubes, paper;
   };
   const Expected expected[] = {
-      {"cornell-box", Crossing::None, true, true, false},
-      {"torus-cornell", Crossing::Translation, true, true, false},
-      {"mirrored-dodecahedron", Crossing::Reflection, true, true, false},
-      {"seifert-weber", Crossing::Isometry, true, true, false},
-      {"poincare-sphere", Crossing::Isometry, true, true, false},
-      {"spherical-spheres", Crossing::ChartChange, true, false, false},
-      {"hyperbolic-spheres", Crossing::None, true, true, false},
-      {"furnace", Crossing::None, false, true, false},
+      {"cornell-box", Crossing::None, true, true, false, false},
+      {"torus-cornell", Crossing::Translation, true, true, false, false},
+      {"mirrored-dodecahedron", Crossing::Reflection, true, false, true, false},
+      {"seifert-weber", Crossing::Isometry, true, false, true, false},
+      {"poincare-sphere", Crossing::Isometry, true, false, true, false},
+      {"spherical-spheres", Crossing::ChartChange, true, false, false, false},
+      {"hyperbolic-spheres", Crossing::None, true, true, false, false},
+      {"furnace", Crossing::None, false, true, false, false},
   };
   for (const Expected& e : expected) {
     const Scene scene = bundled(e.scene);
@@ -111,6 +111,11 @@ TEST(PipelineFeatures, EachBundledSceneGetsItsPairingKindAndPrimitives) {
     EXPECT_EQ(f.crossing, e.crossing) << e.scene << ": " << crossing_name(f.crossing);
     EXPECT_EQ(f.spheres, e.spheres) << e.scene;
     EXPECT_EQ(f.triangles, e.triangles) << e.scene;
+    EXPECT_EQ(f.tubes, e.tubes) << e.scene;
+    const auto defines = f.defines();
+    EXPECT_EQ(std::find(defines.begin(), defines.end(), "HAS_TUBES") != defines.end(), e.tubes)
+        << e.scene;
+    EXPECT_EQ(f.uses_binding(kTubesBinding), e.tubes) << e.scene;
     EXPECT_EQ(f.paper, e.paper) << e.scene;
     EXPECT_NE(f.paper, f.physical) << e.scene << ": one lighting model";
   }

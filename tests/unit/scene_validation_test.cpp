@@ -147,6 +147,21 @@ TEST(SceneLoader, RejectsInvalidObjectsNamingTheField) {
     EXPECT_EQ(error_of(R"({"objects": [)" + object + "]}"), message) << object;
 }
 
+TEST(SceneLoader, RejectsEdgeTubesThatCannotBeDrawn) {
+  const std::string edges = R"({"type": "domain_edges", "material": "red", "radius": )";
+  EXPECT_EQ(error_of(R"({"objects": [)" + edges + "0.1}]}"),
+            R"(objects[0]: "domain_edges" needs a manifold)");
+  const std::string torus = R"("manifold": {"type": "torus", "size": 4}, )";
+  EXPECT_EQ(error_of("{" + torus + R"("materials": {"red": {"emission": [1, 1, 1]}}, "objects": [)" +
+                     edges + "0.1}]}"),
+            "objects[0].material: must not emit: edge tubes are not light sources");
+  EXPECT_EQ(parse_patched("{" + torus + R"("objects": [)" + edges + "0.1}]}").tubes.size(), 12u);
+  EXPECT_EQ(error_of(R"({"geometry": "hyperbolic", "camera": {"position": [0, 0, 0.1]},
+                        "manifold": {"type": "seifert-weber"}, "objects": [)" +
+                     edges + "0.3}]}"),
+            "objects[0].radius: tubes of chart radius 0.300000 leave the hyperbolic chart (|X| >= 1)");
+}
+
 
 // A document built in memory can hold non-finite numbers; they are rejected by field.
 TEST(SceneLoader, RejectsNonFiniteNumbers) {

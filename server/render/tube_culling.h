@@ -1,0 +1,33 @@
+// Which edge tubes a chart segment can meet, from the cell's faces alone (the double twin of
+// nearestTube's culling in shaders/primitives/edge_tube.glsl). A tube lies within its radius of
+// its edge, and the edge lies in the planes of two faces, so a point of the tube is within the
+// radius of both planes. Along the segment o + s d, s in [0, s_max], a face's distance
+// h(s) = delta - n . (o + s d) is linear, smallest at an end: a face is near when that smallest
+// value is at most the cell's largest tube radius, and a tube can be met only when both of its
+// faces are near. A segment that enters by one face and leaves by another, far from the other
+// edges, so tests one tube or none instead of all of them.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "render/cells.h"
+
+namespace geodesic {
+
+// GpuTube's face index when no two of the cell's first 32 faces hold the axis: always tested.
+constexpr uint32_t kAlwaysTest = ~0u;
+
+// Bit i set when the cell's local face i (i < 32) is near the segment.
+uint32_t near_faces(const Cell& cell, const Vec3& o, const Vec3& d, double s_max, double reach);
+
+// Two local faces of the cell whose planes hold the chart segment [a, b] (to within 1e-7 of
+// the chart's scale), or kAlwaysTest twice.
+std::pair<uint32_t, uint32_t> faces_holding(const Cell& cell, const Vec3& a, const Vec3& b);
+
+// Whether a tube held by faces (face_a, face_b) can meet a segment whose near faces are `near`.
+constexpr bool tube_may_meet(uint32_t near, uint32_t face_a, uint32_t face_b) {
+  return face_a >= 32 || face_b >= 32 || ((near >> face_a) & (near >> face_b) & 1u) != 0;
+}
+
+}  // namespace geodesic

@@ -1,0 +1,56 @@
+// The domain's edge tubes (HAS_TUBES): capsules in the cell's chart (server/scene/scene.h
+// EdgeTube), tested analytically against each chart segment of a geodesic rather than through
+// the acceleration structure: a segment starts and ends on the domain's faces, beside the
+// tubes, where a tree of their triangles was deep and every box overlapped the segment. A line
+// that misses a tube's infinite cylinder costs one quadratic's discriminant, and a tube is
+// tested at all only when the segment comes near both faces that hold its axis.
+#ifndef EDGE_TUBE_GLSL
+#define EDGE_TUBE_GLSL
+#if defined(HAS_TUBES)
+#include "geometry/capsule.glsl"
+
+// Bit i set when local face i of the cell (i < 32) comes within `reach` of the segment
+// o + s d, s in [0, sMax] (near_faces in server/render/tube_culling.h).
+uint nearFaces(Cell c, vec3 o, vec3 d, float sMax) {
+  uint near = 0u;
+  for (uint i = 0u; i < min(c.faceCount, 32u); ++i) {
+    vec4 plane = cellFaces[c.faceBegin + i].plane;
+    float h0 = plane.w - dot(plane.xyz, o), h1 = plane.w - dot(plane.xyz, o + sMax * d);
+    if (min(h0, h1) <= c.tubeReach) near |= 1u << i;
+  }
+  return near;
+}
+
+// Tests tube i against o + s d, s in (0, min(sMax, hit.s)]: the nearer hit.
+void testTube(uint i, vec3 o, vec3 d, float sMax, inout ChartHit hit) {
+  vec4 a = tubes[i].a;
+  float s = intersectCapsule(a.xyz, tubes[i].b.xyz, a.w, o, d, 0.0, min(sMax, hit.s));
+  if (s < FAR_CAPSULE) hit = ChartHit(3u, i, s, FAR, vec2(0.0));
+}
+
+// The nearest tube of the cell on o + s d, s in (0, sMax] (for a shadow ray any tube);
+// kind 3 and the tube's index, or no hit. Only tubes both of whose faces are near are tested:
+// for each near face, its tubes (those it is the first face of) whose second face is near too.
+ChartHit nearestTube(uint cell, vec3 o, vec3 d, float sMax, bool anyHit) {
+  ChartHit hit = noChartHit();
+  Cell c = cells[cell];
+  if (c.tubeCount == 0u) return hit;
+  uint near = nearFaces(c, o, d, sMax);
+  for (uint pending = near; pending != 0u; pending &= pending - 1u) {
+    uint range = cellFaces[c.faceBegin + uint(findLSB(pending))].tubes;
+    uint first = c.tubeBegin + (range & 0xFFFFu);
+    for (uint i = first; i < first + (range >> 16); ++i) {
+      if (((near >> tubes[i].faceB) & 1u) == 0u) continue;
+      testTube(i, o, d, sMax, hit);
+      if (anyHit && hit.kind != 0u) return hit;
+    }
+  }
+  for (uint i = c.tubeBegin + c.alwaysBegin; i < c.tubeBegin + c.tubeCount; ++i) {
+    testTube(i, o, d, sMax, hit);
+    if (anyHit && hit.kind != 0u) return hit;
+  }
+  return hit;
+}
+
+#endif
+#endif
