@@ -40,6 +40,25 @@ Surface facing(Surface s) {
   return s;
 }
 
+// The surface at chart point x of the ray's cell, on the chart plane n . X = delta (unit n;
+// geodesic planes are flat in the chart), reached at chart parameter sHit of the ray's
+// segment: position, normals, arc length and arriving tangent; material and emitter are the
+// caller's.
+Surface chartSurface(GeodesicRay ray, vec3 x, vec3 n, float delta, float sHit) {
+  Surface s;
+  s.hit = 1u;
+  s.cell = ray.cell;
+  mat4 P = cellChartIsometry(ray.cell);
+  mat4 toModel = transpose(P);  // signed permutations: P^-1 = P^T
+  vec4 qCell = liftChart(x);
+  s.position = toModel * qCell;
+  s.geometricNormal = toModel * chartPlaneNormal(qCell, n, delta);
+  s.normal = s.geometricNormal;
+  s.t = distanceFromChartParameter(P * ray.p, P * ray.v, sHit);
+  s.incoming = geodesicTangent(ray.p, ray.v, s.t);
+  return s;
+}
+
 // The surface hit by `ray` (whose current segment produced `hit`): kind 1 a triangle, 2 a
 // sphere, 3 an edge tube.
 Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
@@ -63,16 +82,10 @@ Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
   if (hit.kind == 3u) {  // an edge tube: its capsule's normal in the chart, as a plane's
     Tube tube = tubes[hit.index];
     mat4 P = cellChartIsometry(ray.cell);
-    vec4 p = P * ray.p, v = P * ray.v;
-    vec3 x = chartPoint(p) + hit.s * chartDirection(p, v);
+    vec4 p = P * ray.p;
+    vec3 x = chartPoint(p) + hit.s * chartDirection(p, P * ray.v);
     vec3 n = capsuleNormal(tube.a.xyz, tube.b.xyz, x);
-    mat4 toModel = transpose(P);  // signed permutations: P^-1 = P^T
-    vec4 qCell = liftChart(x);
-    s.position = toModel * qCell;
-    s.geometricNormal = toModel * chartPlaneNormal(qCell, n, dot(n, x));
-    s.normal = s.geometricNormal;
-    s.t = distanceFromChartParameter(p, v, hit.s);
-    s.incoming = geodesicTangent(ray.p, ray.v, s.t);
+    s = chartSurface(ray, x, n, dot(n, x), hit.s);
     s.material = tube.material;
     s.emitter = ~0u;
     return facing(s);
@@ -85,12 +98,8 @@ Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
   vec3 a = positions[i0].xyz, b = positions[i1].xyz, c = positions[i2].xyz;
   float w = 1.0 - hit.barycentrics.x - hit.barycentrics.y;
   vec3 x = w * a + hit.barycentrics.x * b + hit.barycentrics.y * c;
-  mat4 toModel = transpose(cellChartIsometry(ray.cell));  // signed permutations: P^-1 = P^T
   vec3 planeNormal = normalize(cross(b - a, c - a));
-  vec4 qCell = liftChart(x);
-  s.position = toModel * qCell;
-  s.geometricNormal = toModel * chartPlaneNormal(qCell, planeNormal, dot(planeNormal, a));
-  s.normal = s.geometricNormal;
+  s = chartSurface(ray, x, planeNormal, dot(planeNormal, a), hit.s);
   TriangleInfo info = triangles[hit.index];
 #if defined(HAS_SMOOTH_NORMALS)
   if (info.smoothNormals != 0u) {  // E3 meshes only: model tangents per vertex
@@ -98,12 +107,8 @@ Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
     if (dot(n, n) > 0.0) s.normal = normalizeTangent(s.position, n);
   }
 #endif
-  mat4 P = cellChartIsometry(ray.cell);
-  float t = distanceFromChartParameter(P * ray.p, P * ray.v, hit.s);
-  s.incoming = geodesicTangent(ray.p, ray.v, t);
   s.material = info.material;
   s.emitter = info.emitter;
-  s.t = t;
   return facing(s);
 #else
   return noSurface();  // unreachable: without triangles every hit is a sphere's
