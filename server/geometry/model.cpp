@@ -68,16 +68,33 @@ double sphere_area_factor(GeometryKind k, double d) {
   return s * s;
 }
 
-double geodesic_distance(GeometryKind k, const Vec4& a, const Vec4& b) {
+namespace {
+// H3: 4 sinh^2(d/2) for d = d(a, b). <b-a, b-a> keeps close points exact but cancels for far
+// ones, where 2 (cosh d - 1) from -<a, b> = cosh d is the accurate one.
+double chord_squared(const Vec4& a, const Vec4& b) {
+  const GeometryKind k = GeometryKind::Hyperbolic;
+  const double cosh_d = -inner(k, a, b);
+  const Vec4 d = b - a;
+  return cosh_d > 2 ? 2 * (cosh_d - 1) : std::max(0.0, inner(k, d, d));
+}
+}  // namespace
+
+double area_factor_between(GeometryKind k, const Vec4& a, const Vec4& b) {
   const Vec4 d = b - a;
   switch (k) {
     case GeometryKind::Hyperbolic: {
-      // <b-a, b-a> = 4 sinh^2(d/2) keeps close points exact but cancels for far ones, where
-      // 2 (cosh d - 1) from -<a, b> = cosh d is the accurate one.
-      const double cosh_d = -inner(k, a, b);
-      const double q = cosh_d > 2 ? 2 * (cosh_d - 1) : std::max(0.0, inner(k, d, d));
-      return 2 * std::asinh(0.5 * std::sqrt(q));
+      const double q = chord_squared(a, b);
+      return q * (1 + 0.25 * q);
     }
+    case GeometryKind::Spherical: return 0.25 * dot(d, d) * dot(a + b, a + b);
+    default: return dot(d.xyz(), d.xyz());
+  }
+}
+
+double geodesic_distance(GeometryKind k, const Vec4& a, const Vec4& b) {
+  const Vec4 d = b - a;
+  switch (k) {
+    case GeometryKind::Hyperbolic: return 2 * std::asinh(0.5 * std::sqrt(chord_squared(a, b)));
     case GeometryKind::Spherical:  // |b-a| = 2 sin(d/2), |b+a| = 2 cos(d/2): exact for all d
       return 2 * std::atan2(std::sqrt(dot(d, d)), std::sqrt(dot(a + b, a + b)));
     default: return length(d.xyz());

@@ -54,6 +54,9 @@ Vec4 geodesic_tangent(GeometryKind k, const Vec4& p, const Vec4& v, double t);
 // A(d): the geodesic sphere of radius d has area 4 pi A(d), and a point source's irradiance
 // falls off as 1 / A(d): d^2 in E3, sinh^2 d in H3, sin^2 d in S3.
 double sphere_area_factor(GeometryKind k, double d);
+// sphere_area_factor(geodesic_distance(a, b)) computed without the distance: |b-a|^2 in E3,
+// q (1 + q/4) with q = 4 sinh^2(d/2) in H3, |b-a|^2 |b+a|^2 / 4 in S3.
+double area_factor_between(GeometryKind k, const Vec4& a, const Vec4& b);
 
 // Geodesic distance (S3: the shorter arc, in [0, pi]).
 double geodesic_distance(GeometryKind k, const Vec4& a, const Vec4& b);

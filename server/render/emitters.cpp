@@ -195,7 +195,11 @@ EmitterTable build_emitters(const Scene& scene) {
     near.resize(std::min(near.size(), kMaxImagesPerEmitter));
     e.gpu.image_begin = uint32_t(table.images.size());
     e.gpu.image_count = uint32_t(near.size());
-    for (const auto& [d, g] : near) table.images.push_back(g->to_glsl());
+    for (const auto& [d, g] : near) {
+      const Vec4 image = *g * c;
+      table.images.push_back(
+          {g->to_glsl(), {float(image.x), float(image.y), float(image.z), float(image.w)}});
+    }
     table.emitters.push_back(e.gpu);
   }
   if (!table.emitters.empty()) table.emitters.back().cdf = 1.0f;

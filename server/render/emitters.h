@@ -32,6 +32,15 @@ struct GpuEmitter {
 };
 static_assert(sizeof(GpuEmitter) == 112, "must match the std430 layout of Emitter");
 
+// One image of an emitter under the group, mirrored by `LightImage` in scene_data.glsl: the
+// isometry, and the emitter's centre carried by it (computed in double), which is all that
+// light sampling reads of every image at every shading point.
+struct GpuLightImage {
+  std::array<float, 16> isometry;  // column-major, of the universal cover
+  std::array<float, 4> center;     // isometry * GpuEmitter::center
+};
+static_assert(sizeof(GpuLightImage) == 80, "must match the std430 layout of LightImage");
+
 // Images kept per emitter: those within the cutoff of the cell's centre (the origin), at
 // most this many, nearest first. In S3 the long way round is also taken when the cutoff
 // exceeds pi.
@@ -39,7 +48,7 @@ constexpr std::size_t kMaxImagesPerEmitter = 64;
 
 struct EmitterTable {
   std::vector<GpuEmitter> emitters;
-  std::vector<std::array<float, 16>> images;  // column-major isometries of the universal cover
+  std::vector<GpuLightImage> images;          // the emitters' images (GpuEmitter ranges)
   std::vector<uint32_t> sphere_emitter;       // per scene sphere: its emitter, or kNone
   std::vector<std::vector<uint32_t>> triangle_emitter;  // per mesh, per triangle
   double cutoff = 0;  // light_cutoff as resolved (geodesic distance)

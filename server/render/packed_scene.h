@@ -101,7 +101,7 @@ struct PackedScene {
   std::vector<GpuSphere> spheres;
   std::vector<GpuPointLight> lights;
   std::vector<GpuEmitter> emitters;         // the physical model's light sources
-  std::vector<Float16> light_images;        // their images' isometries (GpuEmitter ranges)
+  std::vector<GpuLightImage> light_images;  // their images (GpuEmitter ranges)
   double light_cutoff = 0;
   std::vector<GpuCell> cells;
   std::vector<GpuCellFace> faces;

@@ -52,9 +52,15 @@ struct Emitter {
   float radius;   // sphere: geodesic radius; triangle: centroid to farthest corner
   float pmf;
   float cdf;
-  uint imageBegin;  // its images: isometries lightImages[imageBegin, imageBegin + imageCount)
+  uint imageBegin;  // its images: lightImages[imageBegin, imageBegin + imageCount)
   uint imageCount;
   uint pad0, pad1;
+};
+
+// One image of an emitter (server/render/emitters.h GpuLightImage).
+struct LightImage {
+  mat4 isometry;
+  vec4 center;  // isometry * the emitter's centre
 };
 
 struct Cell {
@@ -150,7 +156,7 @@ layout(set = 0, binding = 17, std430) readonly buffer Tubes { Tube tubes[]; };
 #endif
 #if defined(LIGHT_SAMPLING)
 layout(set = 0, binding = 15, std430) readonly buffer Emitters { Emitter emitters[]; };
-layout(set = 0, binding = 16, std430) readonly buffer LightImages { mat4 lightImages[]; };
+layout(set = 0, binding = 16, std430) readonly buffer LightImages { LightImage lightImages[]; };
 #endif
 
 // Loop bounds a specialised pipeline bakes in as constants; the all-features pipeline reads

@@ -65,4 +65,10 @@ float surfaceOffsetLength(vec4 q) {
 // A(d): the geodesic sphere of radius d has area 4 pi A(d) (point-light falloff 1 / A(d)).
 float sphereAreaFactor(float d) { return d * d; }
 
+// A(d(a, b)) without the distance (light-image weights, shaders/lights/emitters.glsl).
+float areaFactorBetween(vec4 a, vec4 b) {
+  vec3 d = b.xyz - a.xyz;
+  return dot(d, d);
+}
+
 #endif

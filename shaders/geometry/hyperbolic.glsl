@@ -36,14 +36,14 @@ vec4 tangentPart(vec4 p, vec4 v) { return v + modelInner(p, v) * p; }
 vec4 geodesicPoint(vec4 p, vec4 v, float t) { return cosh(t) * p + sinhStable(t) * v; }
 vec4 geodesicTangent(vec4 p, vec4 v, float t) { return sinhStable(t) * p + cosh(t) * v; }
 
-// <b-a, b-a> = 4 sinh^2(d/2) keeps close points exact but cancels for far ones, where
-// 2 (cosh d - 1) from -<a, b> = cosh d is the accurate one.
-float geodesicDistance(vec4 a, vec4 b) {
+// 4 sinh^2(d/2) for d = d(a, b): <b-a, b-a> keeps close points exact but cancels for far
+// ones, where 2 (cosh d - 1) from -<a, b> = cosh d is the accurate one.
+float chordSquared(vec4 a, vec4 b) {
   float coshD = -modelInner(a, b);
   vec4 d = b - a;
-  float q = coshD > 2.0 ? 2.0 * (coshD - 1.0) : max(modelInner(d, d), 0.0);
-  return 2.0 * asinhStable(0.5 * sqrt(q));
+  return coshD > 2.0 ? 2.0 * (coshD - 1.0) : max(modelInner(d, d), 0.0);
 }
+float geodesicDistance(vec4 a, vec4 b) { return 2.0 * asinhStable(0.5 * sqrt(chordSquared(a, b))); }
 
 // The boost [I + x x^T / (1 + w), x; x^T, w] carrying the origin to q = (x, w).
 mat4 translationTo(vec4 q) {
@@ -103,5 +103,12 @@ float surfaceOffsetLength(vec4 q) {
 
 // A(d): the geodesic sphere of radius d has area 4 pi A(d) (point-light falloff 1 / A(d)).
 float sphereAreaFactor(float d) { return sinhStable(d) * sinhStable(d); }
+
+// A(d(a, b)) without the distance: with q = 4 sinh^2(d/2) (chordSquared),
+// sinh^2 d = 4 sinh^2(d/2) cosh^2(d/2) = q (1 + q / 4).
+float areaFactorBetween(vec4 a, vec4 b) {
+  float q = chordSquared(a, b);
+  return q * (1.0 + 0.25 * q);
+}
 
 #endif

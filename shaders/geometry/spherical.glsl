@@ -98,4 +98,11 @@ float surfaceOffsetLength(vec4 q) {
 // A(d): the geodesic sphere of radius d has area 4 pi A(d) (point-light falloff 1 / A(d)).
 float sphereAreaFactor(float d) { return sin(d) * sin(d); }
 
+// A(d(a, b)) without the distance: sin^2 d = 4 sin^2(d/2) cos^2(d/2) = |b-a|^2 |b+a|^2 / 4,
+// exact for every d in [0, pi] as geodesicDistance is.
+float areaFactorBetween(vec4 a, vec4 b) {
+  vec4 d = b - a, s = b + a;
+  return 0.25 * dot(d, d) * dot(s, s);
+}
+
 #endif

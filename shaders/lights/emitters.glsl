@@ -16,14 +16,7 @@ const uint EMITTER_POINT = 0u;
 const uint EMITTER_SPHERE = 1u;
 const uint EMITTER_TRIANGLE = 2u;
 const float FULL_TURN = 6.28318530717958647692;
-
-// The direction to a point light's image (the selection weight needs its side of the surface).
-vec4 towardPointLight(Emitter e, vec4 x, vec4 c) {
-#if defined(HAS_POINT_LIGHTS)
-  if (e.kind == EMITTER_POINT) return geodesicDirection(x, c);
-#endif
-  return vec4(0.0);
-}
+const float ONE_BELOW = 0.99999994;  // the largest float below 1
 
 // True when every geodesic from a point at distance d from the sphere's centre meets it: the
 // point is inside it, or (S3) the sphere holds the point's antipode (d + r >= pi), where every
@@ -51,35 +44,28 @@ uint branchCount() { return 1u; }
 #endif
 float branchDistance(float d, uint branch) { return branch == 0u ? d : FULL_TURN - d; }
 
-// How much the geodesic of branch b to the emitter's image at distance d (direction
-// `toward`) may bring: the selection weight. The long way round counts when the cutoff
-// exceeds pi; inside a sphere only the direct branch reaches its surface first; a point light
-// behind the surface (geometric normal ng, zero to skip the test) brings nothing.
-float branchWeight(Emitter e, float d, uint branch, vec4 toward, vec4 ng) {
-  if (branch == 1u && frame.lightCutoff <= PI) return 0.0;
+// How much the geodesics to the emitter's image c may bring, seen from x: the selection
+// weights of branch 0 and branch 1 (the long way round, S3; it counts when the cutoff exceeds
+// pi). Inside a sphere only the direct branch reaches its surface first; a point light behind
+// the surface (geometric normal ng, zero to skip the test) brings nothing: the sign of
+// <c - x, ng> is that of the direction to c, as ng is tangent at x. The falloff A(d) comes
+// from the two points without the distance (areaFactorBetween): this runs for every image of
+// the emitter at every shading point, and sampleLight and lightPdf only need the same weights.
+vec2 imageWeights(Emitter e, vec4 x, vec4 c, vec4 ng) {
 #if defined(HAS_SPHERE_EMITTERS)
-  if (e.kind == EMITTER_SPHERE && sphereSurrounds(e, d)) return branch == 0u ? 4.0 * PI : 0.0;
+  if (e.kind == EMITTER_SPHERE && sphereSurrounds(e, geodesicDistance(x, c)))
+    return vec2(4.0 * PI, 0.0);
 #endif
-  float spread = max(sphereAreaFactor(branchDistance(d, branch)), 1e-12);
+  vec2 branches = vec2(1.0, branchCount() > 1u && frame.lightCutoff > PI ? 1.0 : 0.0);
+  float spread = max(areaFactorBetween(x, c), 1e-12);  // A(2 pi - d) = A(d) in S3
 #if defined(HAS_POINT_LIGHTS)
-  if (e.kind == EMITTER_POINT)
-    return (branch == 0u ? 1.0 : -1.0) * modelInner(toward, ng) < 0.0 ? 0.0 : 1.0 / spread;
-#endif
-  return min(4.0 * PI, e.radiance.w / spread);
-}
-
-// The sum of branchWeight over the emitter's images and branches, seen from x.
-float totalBranchWeight(Emitter e, vec4 x, vec4 ng) {
-  float total = 0.0;
-  for (uint j = 0u; j < e.imageCount; ++j) {
-    vec4 c = lightImages[e.imageBegin + j] * e.center;
-    float d = geodesicDistance(x, c);
-    vec4 toward = towardPointLight(e, x, c);
-    for (uint b = 0u; b < branchCount(); ++b) total += branchWeight(e, d, b, toward, ng);
+  if (e.kind == EMITTER_POINT) {
+    float side = modelInner(c - x, ng);
+    return branches * vec2(side < 0.0 ? 0.0 : 1.0, side > 0.0 ? 0.0 : 1.0) / spread;
   }
-  return total;
+#endif
+  return branches * min(4.0 * PI, e.radiance.w / spread);
 }
-
 
 // The emitter whose cdf range holds u (binary search).
 uint chooseEmitter(float u) {
@@ -122,29 +108,33 @@ bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) 
   if (EMITTER_COUNT == 0u) return false;
   uint index = chooseEmitter(u.x);
   Emitter e = emitters[index];
-  float total = totalBranchWeight(e, x, ng);
-  if (total <= 0.0) return false;
-  // Pick an image and branch in proportion to their weights (the last one that can be
-  // picked catches float round-off in the running sum).
-  float target = u.y * total, w = 0.0;
+  // An image and branch in proportion to their weights, in one pass: each replaces the
+  // choice so far with probability its weight over the running total (a weighted reservoir of
+  // one), and the uniform is rescaled onto the part of [0, 1) that decided it, so one number
+  // serves every step.
+  float total = 0.0, w = 0.0, pick = u.y;
   uint image = e.imageCount, branch = 0u;
   for (uint j = 0u; j < e.imageCount; ++j) {
-    vec4 cj = lightImages[e.imageBegin + j] * e.center;
-    float dj = geodesicDistance(x, cj);
-    vec4 toward = towardPointLight(e, x, cj);
+    vec2 weights = imageWeights(e, x, lightImages[e.imageBegin + j].center, ng);
     for (uint b = 0u; b < branchCount(); ++b) {
-      float wb = branchWeight(e, dj, b, toward, ng);
-      if (wb <= 0.0 || target < 0.0) continue;
-      image = j;
-      branch = b;
-      w = wb;
-      target -= wb;
+      float wb = weights[b];
+      if (wb <= 0.0) continue;
+      total += wb;
+      float keep = wb / total;
+      if (pick < keep) {
+        image = j;
+        branch = b;
+        w = wb;
+        pick = min(pick / keep, ONE_BELOW);
+      } else {
+        pick = (pick - keep) / (1.0 - keep);
+      }
     }
   }
   if (image == e.imageCount) return false;
   float choice = w / total;
-  mat4 g = lightImages[e.imageBegin + image];
-  vec4 c = g * e.center;
+  mat4 g = lightImages[e.imageBegin + image].isometry;
+  vec4 c = lightImages[e.imageBegin + image].center;
   float d = geodesicDistance(x, c);
   float sign = branch == 0u ? 1.0 : -1.0;
   vec4 toward = geodesicDirection(x, c);
@@ -209,35 +199,40 @@ float lightPdf(uint index, vec4 x, vec4 direction, float t, float cosLight) {
 #if defined(HAS_POINT_LIGHTS)
   if (e.kind == EMITTER_POINT) return 0.0;  // no direction finds a point
 #endif
-  float total = totalBranchWeight(e, x, vec4(0.0));
-  if (total <= 0.0) return 0.0;
   vec4 y = normalizePoint(geodesicPoint(x, direction, t));  // the hit point, in x's copy
   uint branch = branchCount() > 1u && t > PI ? 1u : 0u;
+  // The total weight of the images, and the image the geodesic met: the one whose surface
+  // passes closest to y, in the same pass. (A space without faces has one image, the emitter
+  // itself; there y, far along a long geodesic, may be too imprecise in float for this test:
+  // H3 chords of length 10 lose 0.05.)
+  float total = 0.0, best = FAR;
   uint image = 0u;
-#if defined(CELL_CROSSING)
-  // The image the geodesic met: the one whose surface passes closest to y. (A space without
-  // faces has one image, the emitter itself; there y, far along a long geodesic, may be too
-  // imprecise in float for this test: H3 chords of length 10 lose 0.05.)
-  float best = FAR;
+  vec2 met = vec2(0.0);
   for (uint j = 0u; j < e.imageCount; ++j) {
-    float dj = geodesicDistance(y, lightImages[e.imageBegin + j] * e.center);
+    vec4 cj = lightImages[e.imageBegin + j].center;
+    vec2 weights = imageWeights(e, x, cj, vec4(0.0));
+    total += weights.x + weights.y;
+#if defined(CELL_CROSSING)
+    float dj = geodesicDistance(y, cj);
     float miss = e.kind == EMITTER_SPHERE ? abs(dj - e.radius) : dj;
-    if (miss < best) {
-      best = miss;
-      image = j;
-    }
+    if (miss >= best) continue;
+    best = miss;
+    image = j;
+#endif
+    met = weights;
   }
+  if (total <= 0.0) return 0.0;
+#if defined(CELL_CROSSING)
   // A copy of the emitter beyond the cutoff: light sampling never picks it.
   float slack = 1e-3 * (1.0 + t);
-  if (e.imageCount == 0u || best > (e.kind == EMITTER_SPHERE ? slack : e.radius + slack))
-    return 0.0;
+  if (best > (e.kind == EMITTER_SPHERE ? slack : e.radius + slack)) return 0.0;
 #endif
-  mat4 g = lightImages[e.imageBegin + image];
-  float d = geodesicDistance(x, g * e.center);
+  mat4 g = lightImages[e.imageBegin + image].isometry;
+  float d = geodesicDistance(x, lightImages[e.imageBegin + image].center);
 #if defined(HAS_SPHERE_EMITTERS)
   if (e.kind == EMITTER_SPHERE && sphereSurrounds(e, d)) branch = 0u;  // sampled on branch 0
 #endif
-  float choice = branchWeight(e, d, branch, vec4(0.0), vec4(0.0)) / total;
+  float choice = (branch == 0u ? met.x : met.y) / total;
   if (choice <= 0.0) return 0.0;
 #if defined(HAS_SPHERE_EMITTERS)
   if (e.kind == EMITTER_SPHERE) {

@@ -60,6 +60,7 @@ struct ProbeResult {
   vec4 triangleSample;     // sampleUniformTriangle(uv.xy), powerHeuristic(uv.z, uv.w)
   vec4 capsule;            // intersectCapsule(capsule, chart.xyz, normal.xyz, 0, sMax),
                            // capsuleNormal(capsule, chart.xyz)
+  vec4 areas;              // areaFactorBetween(p, q), sphereAreaFactor(geodesicDistance(p, q))
 };
 
 layout(std430, binding = 0) readonly buffer Cases { ProbeCase cases[]; };
@@ -97,6 +98,8 @@ void main() {
   r.capsule = vec4(intersectCapsule(c.capsuleA.xyz, c.capsuleB.xyz, c.capsuleA.w, c.chart.xyz,
                                     c.normal.xyz, 0.0, c.capsuleB.w),
                    capsuleNormal(c.capsuleA.xyz, c.capsuleB.xyz, c.chart.xyz));
+
+  r.areas = vec4(areaFactorBetween(p, q), sphereAreaFactor(geodesicDistance(p, q)), 0.0, 0.0);
 
   vec3 tb, bb;
   orthonormalBasis(c.normal.xyz, tb, bb);

@@ -50,9 +50,9 @@ struct ProbeResult {
   F4 plane_normal, sphere_normal, normalized_point, normalized_tangent, chart_of_point, lifted,
       chart_velocity, offset, basis_tangent, basis_bitangent, cosine_sample;
   std::array<uint32_t, 4> hashes;
-  F4 draws, reflected, triangle_sample, capsule;
+  F4 draws, reflected, triangle_sample, capsule, areas;
 };
-static_assert(sizeof(ProbeResult) == 6 * 16 + 3 * 64 + 11 * 16 + 5 * 16);
+static_assert(sizeof(ProbeResult) == 6 * 16 + 3 * 64 + 11 * 16 + 6 * 16);
 
 constexpr double kUnitRoundoff = FLT_EPSILON / 2;
 constexpr float kFar = 1e30f;

@@ -70,6 +70,14 @@ std::vector<Routine> routines(GeometryKind k) {
        twin<V4, V4, double>(k, model::geodesic_tangent), out(&R::velocity)},
       {{"geodesicDistance", ulps, trig}, in(p, q),
        twin<V4, V4>(k, model::geodesic_distance), scalar(&R::scalars, 1)},
+      {{"areaFactorBetween", ulps}, in(p, q), twin<V4, V4>(k, model::area_factor_between),
+       scalar(&R::areas, 0)},
+      {{"sphereAreaFactor(geodesicDistance)", ulps, trig}, in(p, q),
+       [k](const Values& x) {
+         return Values{model::sphere_area_factor(
+             k, model::geodesic_distance(k, {x[0], x[1], x[2], x[3]}, {x[4], x[5], x[6], x[7]}))};
+       },
+       scalar(&R::areas, 1)},
       {{"geodesicDirection", tangents}, in(p, q),
        twin<V4, V4>(k, model::geodesic_direction), out(&R::towards)},
       {{"modelInner", ulps}, in(v, loose), twin<V4, V4>(k, model::inner), scalar(&R::scalars, 2)},
