@@ -9,15 +9,27 @@
 #if defined(HAS_TUBES)
 #include "geometry/capsule.glsl"
 
-// Bit i set when local face i of the cell (i < 32) comes within `reach` of the segment
-// o + s d, s in [0, sMax] (near_faces in server/render/tube_culling.h).
-uint nearFaces(Cell c, vec3 o, vec3 d, float sMax) {
+// The chart parameter from which the current chart line lies within the cell's tube reach of
+// its local face i (i < 32): 0 when it starts there, FAR when it never comes so near. The
+// tracer's pass over the faces fills it (noteFaceReach) for nearFaces, which then reads no
+// plane again.
+float faceReachedAt[32];
+
+// Face i's plane lies `height` above the line's start and the line approaches it at rate
+// `towards` per unit of chart parameter.
+void noteFaceReach(Cell c, uint i, float height, float towards) {
+  if (i >= 32u) return;
+  float beyond = height - c.tubeReach;
+  faceReachedAt[i] = beyond <= 0.0 ? 0.0 : towards > 0.0 ? beyond / towards : FAR;
+}
+
+// Bit i set when local face i of the cell (i < 32) comes within its tube reach of the segment
+// s in [0, sMax] of the line noteFaceReach saw: min(h(0), h(sMax)) <= reach, h linear in s
+// (near_faces in server/render/tube_culling.h).
+uint nearFaces(Cell c, float sMax) {
   uint near = 0u;
-  for (uint i = 0u; i < min(c.faceCount, 32u); ++i) {
-    vec4 plane = cellFaces[c.faceBegin + i].plane;
-    float h0 = plane.w - dot(plane.xyz, o), h1 = plane.w - dot(plane.xyz, o + sMax * d);
-    if (min(h0, h1) <= c.tubeReach) near |= 1u << i;
-  }
+  for (uint i = 0u; i < min(c.faceCount, 32u); ++i)
+    if (faceReachedAt[i] <= sMax) near |= 1u << i;
   return near;
 }
 
@@ -31,11 +43,12 @@ void testTube(uint i, vec3 o, vec3 d, float sMax, inout ChartHit hit) {
 // The nearest tube of the cell on o + s d, s in (0, sMax] (for a shadow ray any tube);
 // kind 3 and the tube's index, or no hit. Only tubes both of whose faces are near are tested:
 // for each near face, its tubes (those it is the first face of) whose second face is near too.
+// The faces' reach is that noteFaceReach noted for this line.
 ChartHit nearestTube(uint cell, vec3 o, vec3 d, float sMax, bool anyHit) {
   ChartHit hit = noChartHit();
   Cell c = cells[cell];
   if (c.tubeCount == 0u) return hit;
-  uint near = nearFaces(c, o, d, sMax);
+  uint near = nearFaces(c, sMax);
   for (uint pending = near; pending != 0u; pending &= pending - 1u) {
     uint range = cellFaces[c.faceBegin + uint(findLSB(pending))].tubes;
     uint first = c.tubeBegin + (range & 0xFFFFu);
