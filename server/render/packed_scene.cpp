@@ -190,9 +190,8 @@ PackedScene pack_scene(const Scene& scene) {
       out.faces.push_back({to_float4(f.normal, f.delta), f.pairing.to_glsl(),
                            uint32_t(f.target_cell), uint32_t(f.partner), uint32_t(f.internal), 0});
     GpuCell packed{cell.chart_isometry.to_glsl(), uint32_t(cell.face_begin),
-                   uint32_t(cell.faces.size()), 0, 0, 0, 0, {}};
+                   uint32_t(cell.faces.size()), 0, 0, 0, 0, 0, 0};
     pack_cell_tubes(scene, cell, packed, out);
-    out.cells.push_back(packed);
     CellGeometry g;
     g.first_triangle = uint32_t(out.triangles.size());
     pack_cell_triangles(scene, emitting, cell, c, out);
@@ -201,6 +200,9 @@ PackedScene pack_scene(const Scene& scene) {
     pack_cell_spheres(scene, cell, c, out);
     g.sphere_ref_count = uint32_t(out.sphere_refs.size()) - g.first_sphere_ref;
     order_spatially(g.first_triangle, g.first_sphere_ref, out);
+    packed.sphere_begin = g.first_sphere_ref;
+    packed.sphere_count = g.sphere_ref_count;
+    out.cells.push_back(packed);
     out.cell_geometry.push_back(g);
   }
   const CameraPlacement camera = place_camera(k, cells, scene.camera.pose);

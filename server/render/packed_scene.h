@@ -62,7 +62,9 @@ struct GpuCell {
   // Its tubes sorted by their first face (GpuCellFace::tubes), then those always tested:
   // tubes[tube_begin + always_begin, tube_begin + tube_count).
   uint32_t always_begin;
-  uint32_t padding[2];
+  // Its sphere refs, sphere_refs[sphere_begin, sphere_begin + sphere_count) (SPHERE_LIST).
+  uint32_t sphere_begin;
+  uint32_t sphere_count;
 };
 
 // An edge tube's capsule in its cell's chart (scene.h EdgeTube), and two of the cell's faces

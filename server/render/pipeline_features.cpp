@@ -80,6 +80,10 @@ PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
   f.spheres = !packed.sphere_refs.empty();
   f.triangles = !packed.triangles.empty();
   f.tubes = !packed.tubes.empty();
+  f.sphere_list = f.spheres && !f.triangles && f.crossing != Crossing::None &&
+                  std::all_of(packed.cells.begin(), packed.cells.end(), [](const GpuCell& c) {
+                    return c.sphere_count <= kSphereListLength;
+                  });
   f.smooth_normals = std::any_of(packed.triangles.begin(), packed.triangles.end(),
                                  [](const GpuTriangle& t) { return t.smooth != 0; });
   f.paper = scene.render.lighting == LightingModel::Paper;
@@ -136,6 +140,7 @@ std::vector<std::string> PipelineFeatures::defines() const {
   flag(spheres, "HAS_SPHERES");
   flag(triangles, "HAS_TRIANGLES");
   flag(tubes && crossing != Crossing::None, "HAS_TUBES");
+  flag(sphere_list, "SPHERE_LIST");
   flag(smooth_normals, "HAS_SMOOTH_NORMALS");
   flag(paper, "LIGHTING_PAPER");
   flag(physical, "LIGHTING_PHYSICAL");
@@ -191,6 +196,7 @@ std::string PipelineFeatures::summary() const {
   word(spheres, "spheres");
   word(triangles, "triangles");
   word(tubes, "tubes");
+  word(sphere_list, "sphere-list");
   word(smooth_normals, "smooth-normals");
   word(true, paper ? "paper" : "physical");
   word(point_lights, paper ? "point-lights(" + std::to_string(point_light_count) + ")"

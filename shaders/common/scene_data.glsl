@@ -71,7 +71,8 @@ struct Cell {
   uint tubeCount;
   float tubeReach;  // the largest radius among them
   uint alwaysBegin;  // tubes[tubeBegin + alwaysBegin, tubeBegin + tubeCount): always tested
-  uint pad0, pad1;
+  uint sphereBegin;  // its sphere refs: sphereRefs[sphereBegin, sphereBegin + sphereCount)
+  uint sphereCount;
 };
 
 // An edge tube: a capsule in its cell's chart (geometry/capsule.h) and two local faces whose

@@ -15,6 +15,9 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 // the given cell; (p, v) is the same ray in the cell's frame.
 ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool anyHit) {
   ++tracedRays;
+#if defined(SPHERE_LIST)
+  return nearestListedSphere(cell, p, v, sMax, anyHit);
+#else
   rayQueryEXT q;
   uint flags = CELL_OPACITY_FLAGS | (anyHit ? gl_RayFlagsTerminateOnFirstHitEXT : 0u) |
                PRIMITIVE_CULLING_FLAGS;
@@ -56,6 +59,7 @@ ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool 
                     rayQueryGetIntersectionBarycentricsEXT(q, true));
 #endif
   return best;  // the last generated sphere hit is the committed one
+#endif
 }
 
 #include "integrator/integrator.glsl"

@@ -121,6 +121,39 @@ TEST(PipelineFeatures, EachBundledSceneGetsItsPairingKindAndPrimitives) {
   }
 }
 
+// Segments test their cell's spheres one by one where the cells have faces and hold spheres
+// alone, at most kSphereListLength each; the acceleration structure traces the rest.
+// (SpecialisedPipelines.EveryBundledSceneRendersAsWithAllFeatures holds the images: the
+// all-features pipeline traverses.)
+TEST(PipelineFeatures, SmallCellsOfSpheresAreTestedOneByOne) {
+  const auto listed = [](const Scene& scene) {
+    const PipelineFeatures f = scene_features(scene, pack_scene(scene));
+    const auto defines = f.defines();
+    EXPECT_EQ(std::find(defines.begin(), defines.end(), "SPHERE_LIST") != defines.end(),
+              f.sphere_list);
+    return f.sphere_list;
+  };
+  for (const char* name : {"mirrored-dodecahedron", "seifert-weber", "poincare-sphere"})
+    EXPECT_TRUE(listed(bundled(name))) << name;
+  // Triangles in the cell, or no faces at all.
+  for (const char* name : {"torus-cornell", "cornell-box", "hyperbolic-spheres"})
+    EXPECT_FALSE(listed(bundled(name))) << name;
+  EXPECT_FALSE(all_features(GeometryKind::Hyperbolic).sphere_list);
+  // A 3-torus holding n spheres: listed up to kSphereListLength.
+  const auto torus = [](uint32_t n) {
+    std::string objects;
+    for (uint32_t i = 0; i < n; ++i)
+      objects += std::string(i ? "," : "") + R"({"type": "sphere", "material": "m", "center": [)" +
+                 std::to_string(-1.6 + 0.4 * i) + R"(, 0, 0], "radius": 0.1})";
+    return scene_from_json(R"({"geometry": "euclidean", "manifold": {"type": "torus", "size": 4},
+      "camera": {"position": [0, 0, 1.5], "look_at": [0, 0, 0]},
+      "materials": {"m": {"diffuse": 0.5}}, "objects": [)" + objects + R"(],
+      "lights": [{"type": "point", "position": [0, 1, 0], "intensity": 1}]})");
+  };
+  EXPECT_TRUE(listed(torus(kSphereListLength)));
+  EXPECT_FALSE(listed(torus(kSphereListLength + 1)));
+}
+
 TEST(PipelineFeatures, BuffersOnlyForWhatTheSceneHas) {
   const Scene furnace = bundled("furnace");  // triangles, emitters, no spheres, no faces
   const PipelineFeatures f = scene_features(furnace, pack_scene(furnace));
