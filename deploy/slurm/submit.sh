@@ -4,11 +4,12 @@
 # cancels the merge instead of leaving it pending forever. Prints the two job ids.
 #   submit.sh SCENE.json PARTS SAMPLES OUTDIR IMAGE [render options...]
 # e.g. submit.sh scenes/cornell-box.json 4 256 /shared/render-1 cornell.png --width 1280 --height 960
+# IMAGE may name several files, space-separated in one argument ("a.exr a.png"): one per format.
 # OUTDIR must be on storage every node sees. GEODESIC_BIN: the geodesic executable (default
 # `geodesic` on PATH); SBATCH_* variables and extra sbatch options (GEODESIC_SBATCH) pass through.
 set -euo pipefail
 if [ $# -lt 5 ]; then
-  sed -n '2,9p' "$0" >&2
+  sed -n '2,10p' "$0" >&2
   exit 2
 fi
 here=$(cd "$(dirname "$0")" && pwd)

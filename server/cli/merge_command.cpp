@@ -1,6 +1,7 @@
 // `geodesic merge PART.exr... -o OUT.{exr,png,jpg} [--accumulation ALL.exr] [--report R.json]`:
 // sums the accumulations of a sample-parallel render's parts (geodesic render --samples-from K
 // --samples N --accumulation PART.exr) into one image, as one render of all their samples.
+// -o may be given several times: the same image in several formats.
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -18,7 +19,8 @@ namespace geodesic {
 
 int merge_command(int argc, char** argv) {
   std::vector<std::string> inputs;
-  std::string output, accumulation, report;
+  std::vector<std::string> outputs;
+  std::string accumulation, report;
   Exposure exposure;
   for (int i = 0; i < argc; ++i) {
     const std::string flag = argv[i];
@@ -26,7 +28,7 @@ int merge_command(int argc, char** argv) {
       if (i + 1 >= argc) throw std::invalid_argument(flag + ": needs a value");
       return argv[++i];
     };
-    if (flag == "-o" || flag == "--output") output = value();
+    if (flag == "-o" || flag == "--output") outputs.push_back(value());
     else if (flag == "--accumulation") accumulation = value();
     else if (flag == "--report") report = value();
     else if (flag == "--exposure") {
@@ -40,21 +42,22 @@ int merge_command(int argc, char** argv) {
     else inputs.push_back(flag);
   }
   if (inputs.empty()) throw std::invalid_argument("give the parts: PART.exr...");
-  if (output.empty() && accumulation.empty())
+  if (outputs.empty() && accumulation.empty())
     throw std::invalid_argument("missing -o OUT.{png,exr,jpg} (or --accumulation OUT.exr)");
-  if (!output.empty()) check_output_format(output);
+  for (const std::string& output : outputs) check_output_format(output);
 
   std::vector<Accumulation> parts;
   for (const std::string& input : inputs) parts.push_back(read_accumulation(input));
   const Accumulation merged = merge_accumulations(parts);
   const double error = merged.estimated_error();
-  if (!output.empty()) {
+  if (!outputs.empty()) {
     const Image image = merged.image();
-    write_image(output, image, exposure_scale(exposure_stops(exposure, image)));
+    const float scale = exposure_scale(exposure_stops(exposure, image));
+    for (const std::string& output : outputs) write_image(output, image, scale);
   }
   if (!accumulation.empty()) write_accumulation(accumulation, merged);
   std::printf("%s: %zu parts, %u spp at %dx%d, estimated error %.6f\n",
-              (output.empty() ? accumulation : output).c_str(), parts.size(), merged.samples,
+              (outputs.empty() ? accumulation : outputs.front()).c_str(), parts.size(), merged.samples,
               merged.width, merged.height, error);
   if (!report.empty()) {
     nlohmann::json doc{{"view", merged.view},

@@ -1,8 +1,10 @@
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -24,6 +26,8 @@ namespace {
 
 struct RenderArgs {
   std::string scene, generators, output, device, backend = "auto", lighting;
+  std::string scene_dir;        // --scene-dir: where the scene's files resolve (confined to it)
+  std::optional<Mat4> camera;   // --camera: 16 numbers, the pose as frame messages give it
   std::optional<int> spp, width, height, max_depth;
   std::optional<uint64_t> seed;
   std::optional<Exposure> exposure;  // the scene's render.exposure when not given
@@ -49,6 +53,19 @@ long parse_int(const std::string& flag, const std::string& value, long min, long
     throw std::invalid_argument(flag + ": must be an integer in [" + std::to_string(min) + ", " +
                                 std::to_string(max) + "], not \"" + value + "\"");
   return v;
+}
+
+// "m00,m01,...,m33": the camera isometry, row-major (commas or spaces between the numbers).
+Mat4 parse_camera(std::string text) {
+  std::replace(text.begin(), text.end(), ',', ' ');
+  std::istringstream in(text);
+  Mat4 pose;
+  int count = 0;
+  for (double v; in >> v; ++count)
+    if (count < 16) pose.m[count / 4][count % 4] = v;
+  if (count != 16 || !in.eof())
+    throw std::invalid_argument("--camera: must be 16 numbers (the camera isometry, row-major)");
+  return pose;
 }
 
 RenderArgs parse(int argc, char** argv) {
@@ -98,6 +115,8 @@ RenderArgs parse(int argc, char** argv) {
     else if (flag == "--seed") a.seed = parse_int(flag, value(), 0, 1L << 62);
     else if (flag == "--device") a.device = value();
     else if (flag == "--generators") a.generators = value();
+    else if (flag == "--scene-dir") a.scene_dir = value();
+    else if (flag == "--camera") a.camera = parse_camera(value());
     else if (flag == "--backend") a.backend = value();
     else if (flag == "--dump-shaders") a.dump_shaders = value();
     else if (flag == "--pipeline-cache") a.pipeline_cache = value();
@@ -153,12 +172,21 @@ int render_command(int argc, char** argv) {
   const BackendKind backend = parse_backend(args.backend);
   if (!args.output.empty()) check_output_format(args.output);
   // A generator file gets the default scene inside its Dirichlet domain.
-  Scene scene = args.generators.empty() ? load_scene_file(args.scene)
-                                        : parse_scene(generator_file_scene(args.generators), {});
+  Scene scene = !args.generators.empty() ? parse_scene(generator_file_scene(args.generators), {})
+                : args.scene_dir.empty()  ? load_scene_file(args.scene)
+                                          : load_scene_file(args.scene, DocumentFiles(args.scene_dir, true));
   if (args.width) scene.render.width = *args.width;
   if (args.height) scene.render.height = *args.height;
   if (args.max_depth) scene.render.max_depth = *args.max_depth;
   if (args.seed) scene.render.seed = *args.seed;
+  if (args.camera) {
+    // Checked as a scene's "pose" is: an isometry of the scene's space, within round-off.
+    const double error = model::isometry_error(scene.geometry, *args.camera);
+    if (!(error < 1e-6))
+      throw std::invalid_argument("--camera: not an isometry of " + std::string(geometry_name(scene.geometry)) +
+                                  " space (error " + std::to_string(error) + " > 1e-06)");
+    scene.camera.pose = model::reorthonormalize(scene.geometry, *args.camera);
+  }
   if (args.exposure) scene.render.exposure = *args.exposure;
   if (!args.lighting.empty()) {
     // The model's own Russian-roulette default comes with it.

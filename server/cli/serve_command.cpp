@@ -31,7 +31,8 @@ struct ServeOptions {
 
 constexpr const char* kFlags[] = {"--host", "--port", "--device", "--web", "--data", "--token",
                                   "--max-jobs", "--max-queue", "--checkpoint-seconds",
-                                  "--max-sessions", "--prepare-seconds", "--keep-jobs"};
+                                  "--max-sessions", "--prepare-seconds", "--keep-jobs",
+                                  "--jobs-backend", "--slurm-parts", "--slurm-scripts"};
 
 // $XDG_DATA_HOME/geodesic, else ~/.local/share/geodesic (the XDG base directory default).
 std::filesystem::path default_data_dir() {
@@ -72,6 +73,13 @@ void apply(ServeOptions& options, const std::string& flag, const std::string& va
     options.jobs.checkpoint_seconds = double(integer(flag, value, 1, 86400));
   else if (flag == "--max-sessions") options.limits.max_sessions = int(integer(flag, value, 1, 1024));
   else if (flag == "--keep-jobs") options.jobs.keep_jobs = int(integer(flag, value, 0, 1000000));
+  else if (flag == "--jobs-backend") {
+    if (value != "local" && value != "slurm")
+      throw std::invalid_argument("--jobs-backend: must be \"local\" or \"slurm\", not \"" + value + "\"");
+    options.jobs.backend = value == "slurm" ? jobs::JobOptions::Backend::Slurm : jobs::JobOptions::Backend::Local;
+  }
+  else if (flag == "--slurm-parts") options.jobs.slurm.parts = int(integer(flag, value, 1, 1000));
+  else if (flag == "--slurm-scripts") options.jobs.slurm.scripts = value;
   else if (flag == "--prepare-seconds")
     options.server.preparation_seconds = double(integer(flag, value, 1, 3600));
   else throw std::invalid_argument("unknown option " + flag);
@@ -80,6 +88,10 @@ void apply(ServeOptions& options, const std::string& flag, const std::string& va
 ServeOptions parse(int argc, char** argv) {
   ServeOptions options;
   options.server.web_dir = GEODESIC_SOURCE_DIR "/web";
+  options.jobs.slurm.scripts = GEODESIC_SOURCE_DIR "/deploy/slurm";
+  options.jobs.slurm.scene_dir = GEODESIC_SOURCE_DIR "/scenes";
+  // The nodes run this very executable (shared storage, as for the data directory).
+  options.jobs.slurm.binary = std::filesystem::read_symlink("/proc/self/exe");
   for (const char* flag : kFlags)
     if (const char* value = std::getenv(env_name(flag).c_str()); value && *value)
       apply(options, flag, value);
@@ -89,6 +101,11 @@ ServeOptions parse(int argc, char** argv) {
     apply(options, flag, argv[++i]);
   }
   if (options.jobs.data_dir.empty()) options.jobs.data_dir = default_data_dir();
+  // The cluster's nodes find the job folders by this path.
+  options.jobs.data_dir = std::filesystem::absolute(options.jobs.data_dir);
+  if (options.jobs.backend == jobs::JobOptions::Backend::Slurm &&
+      !std::filesystem::is_regular_file(options.jobs.slurm.scripts / "submit.sh"))
+    throw std::invalid_argument("--slurm-scripts: no submit.sh in " + options.jobs.slurm.scripts.string());
   // The listener takes addresses only: the name every resolver gives the loopback is mapped.
   if (options.server.host == "localhost") options.server.host = "127.0.0.1";
   if (const std::string why = net::usable_token(options.server.token); !why.empty())

@@ -183,6 +183,13 @@ ConvergenceLog series_from_json(const Json& series) {
   return log;
 }
 
+std::string without_data_dir(std::string message, const std::filesystem::path& job_dir) {
+  const std::string data_dir = job_dir.parent_path().parent_path().string() + "/";
+  for (std::size_t at = message.find(data_dir); at != std::string::npos; at = message.find(data_dir))
+    message.erase(at, data_dir.size());
+  return message;
+}
+
 std::string job_url(int64_t id) { return "/api/jobs/" + std::to_string(id); }
 
 std::vector<std::string> stored_formats(const Json& request) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -75,6 +76,10 @@ ConvergenceLog series_from_json(const nlohmann::ordered_json& series);
 
 // The result formats of a stored request (none when it has no valid list).
 std::vector<std::string> stored_formats(const nlohmann::ordered_json& request);
+
+// Messages go to clients: where the data directory lies on the server is not theirs to know
+// ("<data>/jobs/2/result.exr: File too large" -> "jobs/2/result.exr: File too large").
+std::string without_data_dir(std::string message, const std::filesystem::path& job_dir);
 
 // "/api/jobs/<id>"
 std::string job_url(int64_t id);

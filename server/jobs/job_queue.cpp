@@ -60,13 +60,18 @@ void JobQueue::schedule() {
     std::erase_if(running_, [](const auto& entry) { return entry.second->finished(); });
     if (!retained || running_.size() != before) retain();
     retained = true;
-    while (int(running_.size()) < options_.max_jobs && !queued_.empty()) {
+    const bool local = options_.backend == JobOptions::Backend::Local;
+    while ((!local || int(running_.size()) < options_.max_jobs) && !queued_.empty()) {
       const int64_t id = queued_.front();
       queued_.pop_front();
       std::optional<JobRecord> job = store_.get(id);
       if (!job || finished(job->state)) continue;
-      running_[id] = std::make_unique<JobRunner>(service_, store_, std::move(*job), job_dir(id),
-                                                 options_.checkpoint_seconds);
+      if (local)
+        running_[id] = std::make_unique<JobRunner>(service_, store_, std::move(*job), job_dir(id),
+                                                   options_.checkpoint_seconds);
+      else
+        running_[id] = std::make_unique<SlurmJob>(service_, store_, std::move(*job), job_dir(id),
+                                                  options_.slurm);
     }
     // Runners do not report their end: a short poll keeps them independent of the queue.
     changed_.wait_for(lock, std::chrono::milliseconds(100));
@@ -75,6 +80,10 @@ void JobQueue::schedule() {
 
 JobRecord JobQueue::submit(const nlohmann::ordered_json& body) {
   const ValidatedJob job = validate_job(body, service_);
+  if (options_.backend == JobOptions::Backend::Slurm && !job.request.stop.spp)
+    throw RequestError(std::string(job.request.stop.seconds ? "seconds" : "target_error") +
+                       ": this server renders jobs on a Slurm cluster, split into parts of equal "
+                       "sample counts: give spp");
   std::lock_guard lock(mutex_);
   if (int(queued_.size()) >= options_.max_queued)
     throw QueueFull("queue: " + std::to_string(queued_.size()) + " jobs waiting, the most this server takes");
@@ -103,7 +112,7 @@ std::vector<JobRecord> JobQueue::list(int64_t after, int limit) const {
 std::optional<JobRecord> JobQueue::cancel(int64_t id) {
   std::lock_guard lock(mutex_);
   if (auto it = running_.find(id); it != running_.end()) {
-    JobRunner& runner = *it->second;
+    JobExecution& runner = *it->second;
     if (!runner.cancel())  // it ended on its own first
       throw AlreadyFinished("state: job " + std::to_string(id) + " is already " +
                             state_name(runner.status().state));

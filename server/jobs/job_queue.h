@@ -2,6 +2,7 @@
 // submission order (jobs that were running when the daemon last stopped first, from their
 // checkpoints), cancels, and finds their results. Files live under the data directory:
 // jobs.sqlite3 (the table) and jobs/<id>/ (checkpoint.bin, result.<format>). Thread-safe.
+// With the Slurm backend a started job is handed to the cluster (slurm_job.h) instead.
 #pragma once
 
 #include <condition_variable>
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "jobs/job_runner.h"
+#include "jobs/slurm_job.h"
 #include "jobs/job_store.h"
 
 namespace geodesic::jobs {
@@ -26,6 +28,10 @@ struct JobOptions {
   int max_queued = 100;       // waiting; more is QueueFull (429)
   double checkpoint_seconds = 10;
   int keep_jobs = 0;          // > 0: finished jobs beyond the newest this many are removed
+  // Where jobs render: on this daemon's device (max_jobs at once), or on a Slurm cluster (every
+  // queued job is submitted at once: the cluster's scheduler queues them).
+  enum class Backend { Local, Slurm } backend = Backend::Local;
+  SlurmOptions slurm;
 };
 
 class QueueFull : public std::runtime_error {
@@ -69,7 +75,7 @@ class JobQueue {
   mutable std::mutex mutex_;  // guards the members below
   std::condition_variable changed_;
   std::deque<int64_t> queued_;  // in start order
-  std::map<int64_t, std::unique_ptr<JobRunner>> running_;
+  std::map<int64_t, std::unique_ptr<JobExecution>> running_;
   bool stopping_ = false;
   std::thread scheduler_;
 };

@@ -25,15 +25,6 @@ constexpr double kSeriesInterval = 0.25;
 // before it fails.
 constexpr int kDeviceLossRetries = 3;
 
-// Messages go to clients: where the data directory lies on the server is not theirs to know
-// ("<data>/jobs/2/result.exr: File too large" -> "jobs/2/result.exr: File too large").
-std::string without_data_dir(std::string message, const std::filesystem::path& job_dir) {
-  const std::string data_dir = job_dir.parent_path().parent_path().string() + "/";
-  for (std::size_t at = message.find(data_dir); at != std::string::npos; at = message.find(data_dir))
-    message.erase(at, data_dir.size());
-  return message;
-}
-
 double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }

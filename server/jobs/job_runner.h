@@ -12,28 +12,29 @@
 #include <mutex>
 #include <thread>
 
+#include "jobs/job_execution.h"
 #include "jobs/job_store.h"
 #include "render/render_service.h"
 
 namespace geodesic::jobs {
 
-class JobRunner {
+class JobRunner : public JobExecution {
  public:
   // `job` is queued, or running when the daemon stopped: its folder `dir` may hold a checkpoint.
   JobRunner(RenderService& service, JobStore& store, JobRecord job, std::filesystem::path dir,
             double checkpoint_seconds);
   // A shutdown: finishes the pass in progress, checkpoints it, and leaves the job running in the
   // store, to resume on the next start.
-  ~JobRunner();
+  ~JobRunner() override;
   JobRunner(const JobRunner&) = delete;
   JobRunner& operator=(const JobRunner&) = delete;
 
   // Marks the job cancelled in the store at once (a DELETE never waits for a device turn);
   // the runner frees the device and deletes the checkpoint at its next turn. False when the
   // job had already ended.
-  bool cancel();
-  JobRecord status() const;  // live: progress since the last save too
-  bool finished() const { return finished_; }
+  bool cancel() override;
+  JobRecord status() const override;
+  bool finished() const override { return finished_; }
 
  private:
   void run();

@@ -442,7 +442,9 @@ Scene parse_scene(const Json& doc, const DocumentFiles& files) {
   return scene;
 }
 
-Scene load_scene_file(const fs::path& path) {
+Scene load_scene_file(const fs::path& path) { return load_scene_file(path, path.parent_path()); }
+
+Scene load_scene_file(const fs::path& path, const DocumentFiles& files) {
   std::error_code error;
   std::ifstream in(path);
   if (!fs::is_regular_file(path, error) || !in)
@@ -458,7 +460,7 @@ Scene load_scene_file(const fs::path& path) {
     throw SceneError(path.string() + ": invalid JSON: " +
                      (tag_end == std::string::npos ? what : what.substr(tag_end + 2)));
   }
-  return parse_scene(doc, path.parent_path());
+  return parse_scene(doc, files);
 }
 
 }  // namespace geodesic

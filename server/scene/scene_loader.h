@@ -16,6 +16,8 @@ namespace geodesic {
 // nlohmann::json converts implicitly but has already sorted its keys.
 Scene parse_scene(const nlohmann::ordered_json& doc, const DocumentFiles& files);
 // Also throws SceneError for an unreadable file or invalid JSON (with the parse position).
+// The document's files (meshes, generator files) resolve beside it, or within `files`.
 Scene load_scene_file(const std::filesystem::path& path);
+Scene load_scene_file(const std::filesystem::path& path, const DocumentFiles& files);
 
 }  // namespace geodesic

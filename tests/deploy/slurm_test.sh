@@ -2,7 +2,11 @@
 # deploy/slurm on a one-node Slurm cluster this test starts and stops itself (Debian's Slurm
 # 22.05 and munge): a render split 4 ways by submit.sh (an sbatch array and an afterok merge)
 # must merge to the same image as one render of all the samples, and a failing part must
-# cancel the merge (--kill-on-invalid-dep) rather than leave it pending. Every daemon started
+# cancel the merge (--kill-on-invalid-dep) rather than leave it pending. Then the daemon with
+# --jobs-backend slurm: a REST job (another camera, two formats) comes back through the API as
+# the same image as one local render, a job for a time is refused (400 naming the field), a
+# cancelled job leaves the cluster's queue, and a job submitted before the daemon restarts is
+# finished after it. Every daemon started
 # here is stopped at the end; each wait is bounded. Exit 77 (ctest: skipped) with the reason
 # printed when the cluster cannot start on this machine.
 #   slurm_test.sh BUILD_DIR
@@ -118,4 +122,85 @@ read -r parts merge < <(GEODESIC_BIN=$bin bash "$repo/deploy/slurm/submit.sh" "$
 wait_jobs 120 "$parts" "$merge"
 [ ! -e "$tmp/fail/merged.exr" ] || { echo "slurm test: the merge ran after a failed part" >&2; exit 1; }
 echo "slurm test: a failed part cancelled the merge"
+
+# The daemon handing its REST jobs to the cluster.
+port=$((port + 2))
+while ss -ltn | grep -q ":$port "; do port=$((port + 1)); done
+api=http://127.0.0.1:$port/api/jobs
+serve() {
+  "$bin" serve --port "$port" --data "$tmp/data" --jobs-backend slurm --slurm-parts 3 \
+    >>"$tmp/daemon.log" 2>&1 &
+  daemon=$!
+  pids+=("$daemon")
+  for _ in $(seq 100); do curl -sf "http://127.0.0.1:$port/healthz" >/dev/null && return; sleep 0.2; done
+  cat "$tmp/daemon.log" >&2; echo "slurm test: the daemon did not serve" >&2; exit 1
+}
+# Waits (bounded) for job $1 to reach state $2; prints its status.
+wait_state() {
+  local deadline=$(( $(date +%s) + 240 )) status
+  while status=$(curl -sf "$api/$1") && ! grep -q "\"state\":\"$2\"" <<<"$status"; do
+    grep -q '"state":"\(failed\|cancelled\|done\)"' <<<"$status" && break
+    [ "$(date +%s)" -lt "$deadline" ] || break
+    sleep 0.5
+  done
+  grep -q "\"state\":\"$2\"" <<<"$status" ||
+    { echo "$status"; cat "$tmp/daemon.log"; echo "slurm test: job $1 is not $2" >&2; exit 1; }
+  echo "$status"
+}
+serve
+# A camera other than the scene's (a turn about y by 0.1), as a frame message gives it.
+camera='[0.9950041652780258,0,0.09983341664682815,0, 0,1,0,0, -0.09983341664682815,0,0.9950041652780258,0, 0,0,0,1]'
+job='{"scene":"cornell-box","width":32,"height":24,"max_depth":2,"spp":12,"formats":["exr","png"],"camera":'"$camera"'}'
+t0=$(date +%s)
+id=$(curl -sf -X POST -H 'Content-Type: application/json' -d "$job" "$api" | sed -n 's/.*"id":\([0-9]*\).*/\1/p')
+[ -n "$id" ] || { cat "$tmp/daemon.log"; echo "slurm test: the job was not accepted" >&2; exit 1; }
+status=$(wait_state "$id" done)
+echo "slurm test: a REST job rendered by the cluster in $(( $(date +%s) - t0 )) s"
+grep -q '"samples":12' <<<"$status" || { echo "$status"; echo "slurm test: not 12 samples" >&2; exit 1; }
+curl -sf "$api/$id/result.exr" -o "$tmp/job.exr"
+curl -sf "$api/$id/result.png" -o "$tmp/job.png"
+[ "$(head -c 4 "$tmp/job.png" | tail -c 3)" = PNG ] || { echo "slurm test: result.png is no PNG" >&2; exit 1; }
+"$bin" render "$scene" "${options[@]}" --spp 12 -o "$tmp/local.exr" \
+  --camera "$(tr -d '[] ' <<<"$camera")" >/dev/null
+idiff -fail 1e-5 -failpercent 0 -warn 1e-5 "$tmp/job.exr" "$tmp/local.exr" ||
+  { echo "slurm test: the cluster's job differs from one local render" >&2; exit 1; }
+if idiff -fail 1e-5 -failpercent 0 "$tmp/job.exr" "$tmp/one.exr" >/dev/null; then
+  echo "slurm test: the job's camera was not applied" >&2; exit 1
+fi
+
+# A time cannot be split into parts beforehand: refused, naming the field.
+code=$(curl -s -o "$tmp/refused.json" -w '%{http_code}' -X POST -H 'Content-Type: application/json' \
+  -d '{"scene":"cornell-box","seconds":5}' "$api")
+[ "$code" = 400 ] && grep -q '"seconds: ' "$tmp/refused.json" ||
+  { echo "$code $(cat "$tmp/refused.json")"; echo "slurm test: a job for a time was not refused" >&2; exit 1; }
+
+# Cancelled: its Slurm jobs leave the queue and its folder goes.
+big='{"scene":"cornell-box","width":256,"height":256,"spp":3000,"formats":["exr"]}'
+id=$(curl -sf -X POST -H 'Content-Type: application/json' -d "$big" "$api" | sed -n 's/.*"id":\([0-9]*\).*/\1/p')
+wait_state "$id" running >/dev/null
+for _ in $(seq 50); do [ -f "$tmp/data/jobs/$id/slurm.json" ] && break; sleep 0.2; done
+read -r parts merge < <(sed 's/.*"parts_job":"\([0-9]*\)","merge_job":"\([0-9]*\)".*/\1 \2/' "$tmp/data/jobs/$id/slurm.json")
+curl -sf -X DELETE "$api/$id" | grep -q '"state":"cancelled"' || { echo "slurm test: no cancel" >&2; exit 1; }
+wait_jobs 60 "$parts" "$merge"
+for _ in $(seq 50); do [ ! -d "$tmp/data/jobs/$id" ] && break; sleep 0.2; done
+[ ! -d "$tmp/data/jobs/$id" ] || { echo "slurm test: the cancelled job's folder stayed" >&2; exit 1; }
+echo "slurm test: a cancelled job left the cluster's queue"
+
+# Submitted, then the daemon stops (SIGTERM) and starts again: the job is picked up and done.
+# An inline document this time, naming a mesh among the bundled scenes' files.
+job='{"scene":'"$(cat "$repo/scenes/mesh-demo.json")"',"width":32,"height":24,"max_depth":2,"spp":12,"formats":["exr"]}'
+id=$(curl -sf -X POST -H 'Content-Type: application/json' -d "$job" "$api" | sed -n 's/.*"id":\([0-9]*\).*/\1/p')
+for _ in $(seq 100); do [ -f "$tmp/data/jobs/$id/slurm.json" ] && break; sleep 0.1; done
+cp "$tmp/data/jobs/$id/slurm.json" "$tmp/submitted.json"
+kill "$daemon"
+timeout 60 tail --pid="$daemon" -f /dev/null
+serve
+wait_state "$id" done >/dev/null
+curl -sf "$api/$id/result.exr" -o "$tmp/resumed.exr"
+"$bin" render "$repo/scenes/mesh-demo.json" "${options[@]}" --spp 12 -o "$tmp/mesh.exr" >/dev/null
+idiff -fail 1e-5 -failpercent 0 -warn 1e-5 "$tmp/resumed.exr" "$tmp/mesh.exr" ||
+  { echo "slurm test: the job resumed after a restart differs" >&2; exit 1; }
+cmp -s "$tmp/data/jobs/$id/slurm.json" "$tmp/submitted.json" ||
+  { echo "slurm test: the restarted daemon submitted the job again" >&2; exit 1; }
+echo "slurm test: a job submitted before a restart was finished after it"
 echo "slurm test: passed in $(( $(date +%s) - start )) s"

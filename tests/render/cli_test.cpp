@@ -146,6 +146,13 @@ TEST(Cli, BadInputFailsWithAMessageNamingTheProblem) {
       {cornell + " -o x.png --exposure bright", "--exposure: must be a number of stops in [-20, 20] or \"auto\", not \"bright\""},
       {cornell + " -o x.png --exposure 21", "--exposure: must be a number of stops in [-20, 20]"},
       {"missing.json -o x.png", "missing.json: cannot open file"},
+      {cornell + " -o x.png --camera 1,0,0", "--camera: must be 16 numbers (the camera isometry, row-major)"},
+      {cornell + " -o x.png --camera 1,0,0,0,0,1,0,0,0,0,1,0,0,0,0,1,0", "--camera: must be 16 numbers"},
+      {cornell + " -o x.png --camera 2,0,0,0,0,1,0,0,0,0,1,0,0,0,0,1",
+       "--camera: not an isometry of euclidean space (error"},
+      // A mesh named by a document whose files are confined to a folder it is not in.
+      {source_path("scenes/mesh-demo.json").string() + " -o x.png --scene-dir " +
+           source_path("web").string(), "objects[8].file: file not found"},
   };
   for (const auto& c : cases) {
     const CliRun r = run_cli("render " + c.args);
