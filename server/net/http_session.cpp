@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "jobs/job_routes.h"
+#include "net/job_routes.h"
 #include "net/auth.h"
 #include "net/http_response.h"
 #include "net/metrics.h"
@@ -48,7 +48,7 @@ Response answer(const Request& request, ServerContext& context) {
   if (needs_token(path) && !authorized(request, context.options.token))
     return unauthorized(request);
   if (context.jobs)
-    if (auto response = jobs::answer_jobs(request, path, *context.jobs)) return std::move(*response);
+    if (auto response = answer_jobs(request, path, *context.jobs)) return std::move(*response);
   if (request.method() != http::verb::get && request.method() != http::verb::head) {
     Response response = error_response(request, http::status::method_not_allowed,
                                        "only GET and HEAD");

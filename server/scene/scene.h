@@ -18,7 +18,7 @@ namespace geodesic {
 
 // The paper's material coefficients (eq. 2.2) plus a perfect mirror, a dielectric and
 // emission, RGB. The `physical` model reads diffuse, specular (normalised Phong), mirror and
-// transmission as the weights of four lobes (server/render/bsdf.h), summing to at most 1.
+// transmission as the weights of four lobes (tests/twins/bsdf.h, the double twin of shaders/materials/bsdf.glsl), summing to at most 1.
 struct Material {
   std::string name;
   Vec3 ambient;          // k_a

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "render/cell_tracer.h"
+#include "twins/cell_tracer.h"
 #include "render_fixture.h"
 #include "scene/catalogue.h"
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <gtest/gtest.h>
 
-#include "render/cell_tracer.h"
+#include "twins/cell_tracer.h"
 #include "scene/catalogue.h"
 #include "scene/dirichlet_domain.h"
 

@@ -9,7 +9,7 @@
 #include "chi_square.h"
 #include "geometry/model.h"
 #include "geometry/sampling.h"
-#include "render/bsdf.h"
+#include "twins/bsdf.h"
 #include "render/emitters.h"
 
 namespace geodesic {

@@ -10,10 +10,10 @@
 #include "jobs/job_queue.h"
 #include "net/http_response.h"
 
-namespace geodesic::jobs {
+namespace geodesic::net {
 
 // The answer for a path under /api/jobs; nullopt for any other path.
-std::optional<net::Response> answer_jobs(const net::Request& request, std::string_view path,
-                                         JobQueue& queue);
+std::optional<Response> answer_jobs(const Request& request, std::string_view path,
+                                    jobs::JobQueue& queue);
 
-}  // namespace geodesic::jobs
+}  // namespace geodesic::net

@@ -1,16 +1,15 @@
-#include "jobs/job_routes.h"
+#include "net/job_routes.h"
 
 #include <algorithm>
 #include <charconv>
 #include <fstream>
 #include <sstream>
 
-namespace geodesic::jobs {
+namespace geodesic::net {
 namespace {
 
-using net::http::status;
-using net::Request;
-using net::Response;
+using namespace geodesic::jobs;
+using http::status;
 using Json = nlohmann::ordered_json;
 
 constexpr std::string_view kPrefix = "/api/jobs";
@@ -187,4 +186,4 @@ std::optional<Response> answer_jobs(const Request& request, std::string_view pat
   return one_job(request, queue, rest.substr(1));
 }
 
-}  // namespace geodesic::jobs
+}  // namespace geodesic::net

@@ -1,4 +1,4 @@
-#include "render/cell_tracer.h"
+#include "twins/cell_tracer.h"
 
 #include <algorithm>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "render/bsdf.h"
+#include "twins/bsdf.h"
 
 #include <cmath>
 #include <numbers>
