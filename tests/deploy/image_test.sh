@@ -37,9 +37,11 @@ if ! command podman run --rm "${PODMAN_RUN_OPTS[@]}" debian:bookworm true >"$tmp
   exit 77
 fi
 t0=$(date +%s)
-[ "${GEODESIC_IMAGE_PREBUILT:-0}" = 1 ] || command podman build --runtime runc --format docker -f "$repo/docker/Dockerfile" -t "$image" \
+# --no-cache: every layer is built again, apt included, so the time printed is the image's build
+# from nothing but the base images (the goal: under 10 min on 2 cores).
+[ "${GEODESIC_IMAGE_PREBUILT:-0}" = 1 ] || command podman build --no-cache --runtime runc --format docker -f "$repo/docker/Dockerfile" -t "$image" \
   "${PODMAN_ULIMITS[@]}" "$repo" >"$tmp/build.log" 2>&1 || { tail -40 "$tmp/build.log"; fail "podman build"; }
-[ "${GEODESIC_IMAGE_PREBUILT:-0}" = 1 ] || echo "image test: built $image in $(( $(date +%s) - t0 )) s"
+[ "${GEODESIC_IMAGE_PREBUILT:-0}" = 1 ] || echo "image test: built $image from nothing but the base images in $(( $(date +%s) - t0 )) s"
 size=$(command podman image inspect "$image" --format '{{.Size}}')
 echo "image test: image size $((size / 1000000)) MB"
 [ "$size" -lt 1000000000 ] || fail "the image is $((size / 1000000)) MB, not under 1 GB"
