@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Copies the shared libraries a binary loads (its ldd closure, less the C and C++ runtimes every
 # Debian image has) into DIR, for the image's runtime stage. Installing their packages instead
-# costs about twice the space: libopenimageio2.4's package dependencies bring GDAL's and PROJ's
-# data, Intel's media SDK, iso-codes and more that the daemon never loads (docker/README.md).
+# brings their package dependencies (e.g. assimp's), which the daemon never loads
+# (docker/README.md).
 #   bundle-libs.sh BINARY DIR
 set -euo pipefail
 binary=${1:?usage: bundle-libs.sh BINARY DIR} dir=${2:?usage: bundle-libs.sh BINARY DIR}

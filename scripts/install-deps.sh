@@ -51,7 +51,7 @@ else
   packages=(
     build-essential cmake ninja-build pkg-config ca-certificates
     libvulkan-dev glslang-tools glslang-dev spirv-tools
-    nlohmann-json3-dev libopenimageio-dev libassimp-dev zlib1g-dev
+    nlohmann-json3-dev libopenexr-dev libpng-dev libassimp-dev zlib1g-dev
     libboost-dev libsqlite3-dev libturbojpeg0-dev
   )
 fi

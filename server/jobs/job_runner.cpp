@@ -221,7 +221,7 @@ void JobRunner::render() {
       for (const std::string& format : job.request.formats)
         write_durably(dir_ / ("result." + format), [&](const std::filesystem::path& file) {
           write_image(file, image, scale);
-          // libpng (through OpenImageIO) does not report a short write on a full disk.
+          // A writer that did not report a short write on a full disk is caught here.
           const Image written = read_image(file);
           if (written.width != image.width || written.height != image.height)
             throw std::runtime_error(file.string() + ": reads back as another image");

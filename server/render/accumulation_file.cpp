@@ -3,8 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include <OpenImageIO/imageio.h>
-
+#include "render/exr_file.h"
 #include "render/relative_error.h"
 
 namespace geodesic {
@@ -46,54 +45,41 @@ double Accumulation::estimated_error() const {
 void write_accumulation(const std::filesystem::path& path, const Accumulation& acc) {
   const size_t pixels = size_t(acc.width) * acc.height;
   if (acc.sums.size() != pixels * 8) throw std::invalid_argument(fail(path, "bad accumulation size"));
-  auto out = OIIO::ImageOutput::create(path.string());
-  if (!out || path.extension() != ".exr")
-    throw std::runtime_error(fail(path, "an accumulation is written as .exr"));
-  OIIO::ImageSpec spec(acc.width, acc.height, 8, OIIO::TypeDesc::FLOAT);
-  spec.channelnames.assign(std::begin(kChannels), std::end(kChannels));
-  spec.alpha_channel = -1;
-  spec.attribute("compression", "zip");
-  spec.attribute("geodesic:sample_start", int(acc.sample_start));
-  spec.attribute("geodesic:samples", int(acc.samples));
-  spec.attribute("geodesic:view", acc.view);
+  if (path.extension() != ".exr") throw std::runtime_error(fail(path, "an accumulation is written as .exr"));
+  ExrImage exr{acc.width, acc.height, {std::begin(kChannels), std::end(kChannels)}, {}, {}, {}};
+  exr.integers = {{"geodesic:sample_start", int(acc.sample_start)}, {"geodesic:samples", int(acc.samples)}};
+  exr.strings = {{"geodesic:view", acc.view}};
   // Pixel-interleaved: the halves' 4 floats side by side.
-  std::vector<float> interleaved(pixels * 8);
+  exr.pixels.resize(pixels * 8);
   for (size_t p = 0; p < pixels; ++p)
     for (int c = 0; c < 4; ++c) {
-      interleaved[p * 8 + c] = acc.sums[p * 4 + c];
-      interleaved[p * 8 + 4 + c] = acc.sums[(pixels + p) * 4 + c];
+      exr.pixels[p * 8 + c] = acc.sums[p * 4 + c];
+      exr.pixels[p * 8 + 4 + c] = acc.sums[(pixels + p) * 4 + c];
     }
-  if (!out->open(path.string(), spec) ||
-      !out->write_image(OIIO::TypeDesc::FLOAT, interleaved.data()) || !out->close())
-    throw std::runtime_error(fail(path, out->geterror()));
+  write_exr(path, exr);
 }
 
 Accumulation read_accumulation(const std::filesystem::path& path) {
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) throw std::runtime_error(fail(path, OIIO::geterror()));
-  const OIIO::ImageSpec& spec = in->spec();
-  const std::string view = spec.get_string_attribute("geodesic:view");
-  const int start = spec.get_int_attribute("geodesic:sample_start", -1);
-  const int samples = spec.get_int_attribute("geodesic:samples", -1);
-  if (start < 0 || samples < 0 || spec.nchannels != 8)
+  const ExrImage exr = read_exr(path);
+  const auto view = exr.strings.find("geodesic:view");
+  const auto start = exr.integers.find("geodesic:sample_start");
+  const auto samples = exr.integers.find("geodesic:samples");
+  if (view == exr.strings.end() || start == exr.integers.end() || samples == exr.integers.end() ||
+      start->second < 0 || samples->second < 0 || exr.channels.size() != 8)
     throw std::runtime_error(fail(path, "not an accumulation (geodesic render --accumulation)"));
   // EXR stores channels by name (sorted): find each by its name.
   int index[8];
   for (int c = 0; c < 8; ++c) {
-    const auto it = std::find(spec.channelnames.begin(), spec.channelnames.end(), kChannels[c]);
-    if (it == spec.channelnames.end()) throw std::runtime_error(fail(path, "no channel " + std::string(kChannels[c])));
-    index[c] = int(it - spec.channelnames.begin());
+    index[c] = exr.channel(kChannels[c]);
+    if (index[c] < 0) throw std::runtime_error(fail(path, "no channel " + std::string(kChannels[c])));
   }
-  const size_t pixels = size_t(spec.width) * spec.height;
-  std::vector<float> all(pixels * 8);
-  if (!in->read_image(0, 0, 0, 8, OIIO::TypeDesc::FLOAT, all.data()))
-    throw std::runtime_error(fail(path, in->geterror()));
-  Accumulation acc{spec.width, spec.height, uint32_t(start), uint32_t(samples), view, {}};
+  const size_t pixels = size_t(exr.width) * exr.height;
+  Accumulation acc{exr.width, exr.height, uint32_t(start->second), uint32_t(samples->second), view->second, {}};
   acc.sums.resize(pixels * 8);
   for (size_t p = 0; p < pixels; ++p)
     for (int c = 0; c < 4; ++c) {
-      acc.sums[p * 4 + c] = all[p * 8 + index[c]];
-      acc.sums[(pixels + p) * 4 + c] = all[p * 8 + index[4 + c]];
+      acc.sums[p * 4 + c] = exr.pixels[p * 8 + index[c]];
+      acc.sums[(pixels + p) * 4 + c] = exr.pixels[p * 8 + index[4 + c]];
     }
   return acc;
 }

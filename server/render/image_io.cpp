@@ -5,7 +5,17 @@
 #include <stdexcept>
 #include <string>
 
-#include <OpenImageIO/imageio.h>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <vector>
+
+#include <png.h>
+#include <turbojpeg.h>
+
+#include "render/exr_file.h"
 
 namespace geodesic {
 
@@ -37,53 +47,127 @@ void check_output_format(const std::filesystem::path& path) {
                              "\" (use .exr, .png or .jpg)");
 }
 
+namespace {
+
+void write_file(const std::filesystem::path& path, const unsigned char* data, size_t size) {
+  std::FILE* file = std::fopen(path.c_str(), "wb");
+  if (!file) throw std::runtime_error(path.string() + ": " + std::strerror(errno));
+  const bool written = std::fwrite(data, 1, size, file) == size && std::fflush(file) == 0;
+  const int error = errno;
+  if (std::fclose(file) != 0 || !written)
+    throw std::runtime_error(path.string() + ": " + std::strerror(written ? errno : error));
+}
+
+std::vector<unsigned char> read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path.string() + ": cannot open file");
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write_png(const std::filesystem::path& path, const std::vector<uint8_t>& bytes, int width, int height) {
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  png.width = uint32_t(width);
+  png.height = uint32_t(height);
+  png.format = PNG_FORMAT_RGB;
+  png_alloc_size_t size = 0;
+  if (!png_image_write_get_memory_size(png, size, 0, bytes.data(), 0, nullptr))
+    throw std::runtime_error(path.string() + ": libpng: " + png.message);
+  std::vector<unsigned char> encoded(size);
+  if (!png_image_write_to_memory(&png, encoded.data(), &size, 0, bytes.data(), 0, nullptr))
+    throw std::runtime_error(path.string() + ": libpng: " + png.message);
+  write_file(path, encoded.data(), size);  // a short write is reported, unlike through stdio
+}
+
+void write_jpeg(const std::filesystem::path& path, const std::vector<uint8_t>& bytes, int width, int height) {
+  tjhandle handle = tjInitCompress();
+  unsigned char* jpeg = nullptr;
+  unsigned long size = 0;
+  const bool ok = handle && tjCompress2(handle, bytes.data(), width, 0, height, TJPF_RGB, &jpeg,
+                                        &size, TJSAMP_420, 92, TJFLAG_ACCURATEDCT) == 0;
+  const std::string error = handle ? tjGetErrorStr2(handle) : "no compressor";
+  if (handle) tjDestroy(handle);
+  if (!ok) {
+    tjFree(jpeg);
+    throw std::runtime_error(path.string() + ": TurboJPEG: " + error);
+  }
+  try {
+    write_file(path, jpeg, size);
+  } catch (...) {
+    tjFree(jpeg);
+    throw;
+  }
+  tjFree(jpeg);
+}
+
+// 8-bit sRGB RGB pixels of a PNG or JPEG file's bytes.
+std::vector<uint8_t> decode_8bit(const std::filesystem::path& path, const std::vector<unsigned char>& data,
+                                 int& width, int& height) {
+  std::vector<uint8_t> rgb;
+  if (data.size() >= 8 && png_sig_cmp(data.data(), 0, 8) == 0) {
+    png_image png{};
+    png.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_memory(&png, data.data(), data.size()))
+      throw std::runtime_error(path.string() + ": libpng: " + png.message);
+    png.format = PNG_FORMAT_RGB;
+    rgb.resize(PNG_IMAGE_SIZE(png));
+    if (!png_image_finish_read(&png, nullptr, rgb.data(), 0, nullptr))
+      throw std::runtime_error(path.string() + ": libpng: " + png.message);
+    width = int(png.width);
+    height = int(png.height);
+    return rgb;
+  }
+  tjhandle handle = tjInitDecompress();
+  int subsampling = 0, colourspace = 0;
+  bool ok = handle && tjDecompressHeader3(handle, data.data(), data.size(), &width, &height,
+                                          &subsampling, &colourspace) == 0;
+  if (ok) {
+    rgb.resize(size_t(width) * height * 3);
+    ok = tjDecompress2(handle, data.data(), data.size(), rgb.data(), width, 0, height, TJPF_RGB,
+                       TJFLAG_ACCURATEDCT) == 0;
+  }
+  const std::string error = handle ? tjGetErrorStr2(handle) : "no decompressor";
+  if (handle) tjDestroy(handle);
+  if (!ok) throw std::runtime_error(path.string() + ": not an EXR, PNG or JPEG image (" + error + ")");
+  return rgb;
+}
+
+}  // namespace
+
 void write_image(const std::filesystem::path& path, const Image& image, float scale) {
   check_output_format(path);
   const std::string ext = lower_extension(path);
-  const bool linear = ext == ".exr";
-  auto out = OIIO::ImageOutput::create(path.string());
-  if (!out) throw std::runtime_error(path.string() + ": " + OIIO::geterror());
-
-  OIIO::ImageSpec spec(image.width, image.height, 3,
-                       linear ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8);
-  if (!linear) spec.attribute("oiio:ColorSpace", "sRGB");
-  if (ext == ".jpg" || ext == ".jpeg") spec.attribute("Compression", "jpeg:92");
-  if (!out->open(path.string(), spec))
-    throw std::runtime_error(path.string() + ": " + out->geterror());
-
-  bool ok;
-  if (linear) {
-    ok = out->write_image(OIIO::TypeDesc::FLOAT, image.rgb.data());
-  } else {
-    std::vector<uint8_t> bytes(image.rgb.size());
-    std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(),
-                   [scale](float v) { return to_srgb8(v * scale); });
-    ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
-  }
-  if (!ok || !out->close()) throw std::runtime_error(path.string() + ": " + out->geterror());
+  if (ext == ".exr") return write_exr(path, {image.width, image.height, {"R", "G", "B"}, image.rgb, {}, {}});
+  std::vector<uint8_t> bytes(image.rgb.size());
+  std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(),
+                 [scale](float v) { return to_srgb8(v * scale); });
+  if (ext == ".png") write_png(path, bytes, image.width, image.height);
+  else write_jpeg(path, bytes, image.width, image.height);
 }
 
 Image read_image(const std::filesystem::path& path) {
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) throw std::runtime_error(path.string() + ": " + OIIO::geterror());
-  const OIIO::ImageSpec& spec = in->spec();
+  const std::vector<unsigned char> data = read_file(path);
   Image image;
-  image.width = spec.width;
-  image.height = spec.height;
-  const bool srgb = spec.format == OIIO::TypeDesc::UINT8;
-  std::vector<float> all(size_t(spec.width) * spec.height * spec.nchannels);
-  if (srgb) {
-    std::vector<uint8_t> bytes(all.size());
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, bytes.data()))
-      throw std::runtime_error(path.string() + ": " + in->geterror());
-    std::transform(bytes.begin(), bytes.end(), all.begin(), from_srgb8);
-  } else if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data())) {
-    throw std::runtime_error(path.string() + ": " + in->geterror());
+  static const unsigned char kExrMagic[4] = {0x76, 0x2f, 0x31, 0x01};
+  if (data.size() >= 4 && std::equal(kExrMagic, kExrMagic + 4, data.begin())) {
+    const ExrImage exr = read_exr(path);
+    image.width = exr.width;
+    image.height = exr.height;
+    // R, G and B by name; a one-channel file (Y, or any) is grey.
+    int index[3];
+    for (int c = 0; c < 3; ++c) {
+      index[c] = exr.channel(std::string(1, "RGB"[c]));
+      if (index[c] < 0) index[c] = exr.channel("Y") >= 0 ? exr.channel("Y") : 0;
+    }
+    const size_t pixels = size_t(exr.width) * exr.height, count = exr.channels.size();
+    image.rgb.resize(pixels * 3);
+    for (size_t p = 0; p < pixels; ++p)
+      for (int c = 0; c < 3; ++c) image.rgb[p * 3 + c] = exr.pixels[p * count + index[c]];
+    return image;
   }
-  image.rgb.resize(size_t(spec.width) * spec.height * 3);
-  for (size_t p = 0; p < size_t(spec.width) * spec.height; ++p)
-    for (int c = 0; c < 3; ++c)
-      image.rgb[p * 3 + c] = all[p * spec.nchannels + std::min(c, spec.nchannels - 1)];
+  const std::vector<uint8_t> rgb = decode_8bit(path, data, image.width, image.height);
+  image.rgb.resize(rgb.size());
+  std::transform(rgb.begin(), rgb.end(), image.rgb.begin(), from_srgb8);
   return image;
 }
 

@@ -1,4 +1,5 @@
-// Writes images through OpenImageIO: EXR keeps linear floats; PNG and JPEG get sRGB 8-bit.
+// Writes and reads images: EXR (OpenEXR) keeps linear floats; PNG (libpng) and JPEG (TurboJPEG)
+// get sRGB 8-bit.
 #pragma once
 
 #include <filesystem>
@@ -16,8 +17,8 @@ void check_output_format(const std::filesystem::path& path);
 // the path and the reason on failure.
 void write_image(const std::filesystem::path& path, const Image& image, float scale = 1);
 
-// Reads any image OpenImageIO understands as linear RGB floats (8-bit files are decoded from
-// sRGB). Used by tests and tools.
+// Reads an EXR, PNG or JPEG file (told apart by its first bytes) as linear RGB floats (8-bit
+// files are decoded from sRGB). Used by tests and tools, and to check a written result.
 Image read_image(const std::filesystem::path& path);
 
 }  // namespace geodesic

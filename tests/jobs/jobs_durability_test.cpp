@@ -152,8 +152,8 @@ TEST(JobsDurability, AResultTooLargeForTheDiskFailsItsJobAndNothingElse) {
   // down to 1 MiB, less than a full-HD result, while the job renders, and back up once it has
   // failed (the disk freed). Only meanwhile: lavapipe's device memory is a memfd that grows
   // with every allocation, and its growth past the limit is a SIGBUS (docs/reliability.md).
-  // An EXR writer reports the short write; libpng through OpenImageIO does not, and the
-  // read-back catches it.
+  // Both writers (OpenEXR, and libpng into memory then one checked write) report the short
+  // write; the read-back would catch one that did not.
   auto file_size_limit = [&](rlim_t bytes) {  // the soft limit: it can go up again
     rlimit limit{};
     ASSERT_EQ(prlimit(daemon.pid(), RLIMIT_FSIZE, nullptr, &limit), 0);
