@@ -29,7 +29,8 @@ for i in "${!layers[@]}"; do
     if compiles "$layer" "${header[$above]}"; then
       echo "layers: $layer includes ${header[$above]} of the layer above it" >&2; exit 1
     fi
-    grep -q "${header[$above]}: No such file" "$build/layers/last.err" ||
+    # GCC: "scene/scene.h: No such file or directory"; clang: "'scene/scene.h' file not found".
+    grep -q -E "${header[$above]}(: No such file|' file not found)" "$build/layers/last.err" ||
       { cat "$build/layers/last.err" >&2; echo "layers: $layer failed on ${header[$above]} for another reason" >&2; exit 1; }
   fi
 done
