@@ -5,6 +5,7 @@
 #define CORE_GLSL
 #include "common/scene_data.glsl"
 #include "common/random.glsl"
+#include "common/sobol.glsl"
 #include "common/sampling.glsl"
 #include "geometry/model.glsl"
 #include "integrator/chart_ray.glsl"

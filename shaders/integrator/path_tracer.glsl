@@ -3,9 +3,8 @@
 #ifndef PATH_TRACER_GLSL
 #define PATH_TRACER_GLSL
 
-// One sample of pixel `pixel`: a jittered camera geodesic through the pinhole.
-vec3 pixelSample(uvec2 pixel, inout uint rng) {
-  vec2 jitter = vec2(rngNext(rng), rngNext(rng));
+// One sample of pixel `pixel`: a camera geodesic through the pinhole at `jitter` in the pixel.
+vec3 pixelSample(uvec2 pixel, vec2 jitter, inout uint rng) {
   vec2 ndc = 2.0 * (vec2(pixel) + jitter) / vec2(frame.width, frame.height) - 1.0;
   vec3 dir = normalize(vec3(ndc.x * frame.tanHalfFovY * frame.aspect, -ndc.y * frame.tanHalfFovY, -1.0));
   GeodesicRay ray;
@@ -33,7 +32,12 @@ void accumulatePixel(uvec2 launch) {
   for (uint i = 0u; i < push.sampleCount; ++i) {
     uint sampleIndex = push.sampleStart + i;
     uint rng = rngSeed(index, sampleIndex, frame.seed);
-    vec3 value = pixelSample(pixel, rng);
+    // Where in the pixel: a scrambled Sobol sequence per pixel and half (common/sobol.glsl).
+    // The even- and odd-numbered samples are two independent sequences, each stratified over
+    // its own runs, so the halves stay independent unbiased estimates and their difference the
+    // error estimate it was with independent samples. Every other dimension draws from rng.
+    vec2 jitter = sobolSample(sampleIndex >> 1u, rngSeed(index, sampleIndex & 1u, frame.seed ^ 0x5bd1e995u));
+    vec3 value = pixelSample(pixel, jitter, rng);
     // A NaN/Inf sample would poison the pixel forever: drop its value, and count it.
     if (any(isnan(value)) || any(isinf(value))) {
       atomicAdd(nonFiniteSamples, 1u);

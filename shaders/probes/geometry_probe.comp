@@ -8,6 +8,7 @@
 layout(local_size_x = 64) in;
 
 #include "common/random.glsl"
+#include "common/sobol.glsl"
 #include "common/sampling.glsl"
 #include "geometry/model.glsl"
 #include "geometry/capsule.glsl"
@@ -61,6 +62,8 @@ struct ProbeResult {
   vec4 capsule;            // intersectCapsule(capsule, chart.xyz, normal.xyz, 0, sMax),
                            // capsuleNormal(capsule, chart.xyz)
   vec4 areas;              // areaFactorBetween(p, q), sphereAreaFactor(geodesicDistance(p, q))
+  uvec4 sobol;             // sobolBits(rng.y, rng.w), nestedUniformScramble(rng.x, rng.z),
+                           // sobolSecond(rng.y)
 };
 
 layout(std430, binding = 0) readonly buffer Cases { ProbeCase cases[]; };
@@ -112,6 +115,8 @@ void main() {
   uint seed = state;
   r.draws = vec4(rngNext(state), rngNext(state), rngNext(state), rngNext(state));
   r.hashes = uvec4(pcgHash(c.rng.w), seed, state, 0u);
+  r.sobol = uvec4(sobolBits(c.rng.y, c.rng.w), nestedUniformScramble(c.rng.x, c.rng.z),
+                  sobolSecond(c.rng.y));
 
   results[i] = r;
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "geometry/random.h"
+#include "geometry/sobol.h"
 #include "geometry/sampling.h"
 #include "geometry_probe.h"
 
@@ -161,7 +162,7 @@ TEST_P(GlslReference, EveryRoutineMatchesItsDoubleTwin) {
   for (const Routine& r : all) r.agreement.print(geometry_name(k));
 }
 
-TEST_P(GlslReference, RandomNumbersAreBitExact) {
+TEST_P(GlslReference, RandomNumbersAreBitExact) {  // and the Sobol points
   std::vector<ProbeCase> cases;
   for (int i = 0; i < 4096; ++i) cases.push_back(maker.make());
   for (uint32_t edge : {0u, 1u, 0x7FFFFFFFu, 0x80000000u, 0xFFFFFFFFu}) {
@@ -178,6 +179,12 @@ TEST_P(GlslReference, RandomNumbersAreBitExact) {
     ASSERT_EQ(out.hashes[1], state) << "case " << i;
     for (int j = 0; j < 4; ++j) ASSERT_EQ(double(out.draws[j]), rng_next(state)) << "case " << i;
     ASSERT_EQ(out.hashes[2], state) << "case " << i;
+    // The pixel samples' Sobol points, bit for bit.
+    const SobolPoint point = sobol_sample(in[1], in[3]);
+    ASSERT_EQ(out.sobol[0], point.x) << "case " << i;
+    ASSERT_EQ(out.sobol[1], point.y) << "case " << i;
+    ASSERT_EQ(out.sobol[2], nested_uniform_scramble(in[0], in[2])) << "case " << i;
+    ASSERT_EQ(out.sobol[3], sobol_second(in[1])) << "case " << i;
   }
 }
 
