@@ -33,33 +33,15 @@ double seconds_since(Clock::time_point t) {
 
 JobRunner::JobRunner(RenderService& service, JobStore& store, JobRecord job,
                      std::filesystem::path dir, double checkpoint_seconds)
-    : service_(service),
-      store_(store),
-      dir_(std::move(dir)),
-      checkpoint_seconds_(checkpoint_seconds),
-      job_(std::move(job)) {
+    : JobExecution(store, std::move(job), std::move(dir)),
+      service_(service),
+      checkpoint_seconds_(checkpoint_seconds) {
   thread_ = std::thread([this] { run(); });
 }
 
 JobRunner::~JobRunner() {
   stop_ = true;
   thread_.join();
-}
-
-bool JobRunner::cancel() {
-  {
-    std::lock_guard lock(mutex_);
-    if (jobs::finished(job_.state)) return false;
-    job_.state = JobState::Cancelled;
-  }
-  cancel_ = true;
-  save(JobState::Cancelled);
-  return true;
-}
-
-JobRecord JobRunner::status() const {
-  std::lock_guard lock(mutex_);
-  return job_;
 }
 
 void JobRunner::run() {
@@ -81,19 +63,10 @@ void JobRunner::run() {
   finished_ = true;
 }
 
-void JobRunner::save(JobState state, const std::string& message) {
-  JobRecord copy;
-  {
-    std::lock_guard lock(mutex_);
-    if (job_.state == JobState::Cancelled) state = JobState::Cancelled;  // a cancel wins
-    job_.state = state;
-    job_.message = without_data_dir(message, dir_);
-    copy = job_;
-  }
+void JobRunner::remove_files(JobState state) {
   std::error_code ignored;
   if (state == JobState::Failed) std::filesystem::remove_all(dir_, ignored);  // results half written
   else if (jobs::finished(state)) std::filesystem::remove(dir_ / "checkpoint.bin", ignored);
-  store_.update(copy);
 }
 
 void JobRunner::render() {

@@ -26,30 +26,18 @@ class JobRunner : public JobExecution {
   // A shutdown: finishes the pass in progress, checkpoints it, and leaves the job running in the
   // store, to resume on the next start.
   ~JobRunner() override;
-  JobRunner(const JobRunner&) = delete;
-  JobRunner& operator=(const JobRunner&) = delete;
-
-  // Marks the job cancelled in the store at once (a DELETE never waits for a device turn);
-  // the runner frees the device and deletes the checkpoint at its next turn. False when the
-  // job had already ended.
-  bool cancel() override;
-  JobRecord status() const override;
-  bool finished() const override { return finished_; }
+  // A cancel (JobExecution::cancel) frees the device and deletes the checkpoint at the runner's
+  // next device turn.
 
  private:
   void run();
   void render();
-  // Persists `state` (and the progress so far), unless the job was cancelled meanwhile: then it
-  // stays cancelled. A finished job's checkpoint goes.
-  void save(JobState state, const std::string& message = "");
+  // A failed job's results may be half written: its folder goes; an ended job's checkpoint goes.
+  void remove_files(JobState state) override;
 
   RenderService& service_;
-  JobStore& store_;
-  const std::filesystem::path dir_;
   const double checkpoint_seconds_;
-  mutable std::mutex mutex_;  // guards job_
-  JobRecord job_;
-  std::atomic<bool> cancel_{false}, stop_{false}, finished_{false};
+  std::atomic<bool> stop_{false};
   std::thread thread_;
 };
 

@@ -71,11 +71,9 @@ int slurm_parts(uint32_t spp, int most) {
 
 SlurmJob::SlurmJob(RenderService& service, JobStore& store, JobRecord job,
                    std::filesystem::path dir, SlurmOptions options)
-    : service_(service),
-      store_(store),
-      dir_(std::move(dir)),
-      options_(std::move(options)),
-      job_(std::move(job)) {
+    : JobExecution(store, std::move(job), std::move(dir)),
+      service_(service),
+      options_(std::move(options)) {
   thread_ = std::thread([this] { run(); });
 }
 
@@ -88,35 +86,9 @@ SlurmJob::~SlurmJob() {
   thread_.join();
 }
 
-bool SlurmJob::cancel() {
-  {
-    std::lock_guard lock(mutex_);
-    if (jobs::finished(job_.state)) return false;
-    job_.state = JobState::Cancelled;
-    cancel_ = true;
-  }
-  wake_.notify_all();
-  save(JobState::Cancelled);
-  return true;
-}
-
-JobRecord SlurmJob::status() const {
-  std::lock_guard lock(mutex_);
-  return job_;
-}
-
-void SlurmJob::save(JobState state, const std::string& message) {
-  JobRecord copy;
-  {
-    std::lock_guard lock(mutex_);
-    if (job_.state == JobState::Cancelled) state = JobState::Cancelled;  // a cancel wins
-    job_.state = state;
-    job_.message = without_data_dir(message, dir_);
-    copy = job_;
-  }
+void SlurmJob::remove_files(JobState state) {
   std::error_code ignored;
   if (state == JobState::Failed || state == JobState::Cancelled) std::filesystem::remove_all(dir_, ignored);
-  store_.update(copy);
 }
 
 void SlurmJob::run() {

@@ -44,12 +44,6 @@ class SlurmJob : public JobExecution {
            SlurmOptions options);
   // Stops watching; the job stays running in the store and on the cluster.
   ~SlurmJob() override;
-  SlurmJob(const SlurmJob&) = delete;
-  SlurmJob& operator=(const SlurmJob&) = delete;
-
-  bool cancel() override;
-  JobRecord status() const override;
-  bool finished() const override { return finished_; }
 
  private:
   void run();
@@ -57,20 +51,18 @@ class SlurmJob : public JobExecution {
   bool active();   // either Slurm job still pending or running
   void progress();
   void collect();  // after both left the queue: done with the results, or failed with why
-  void save(JobState state, const std::string& message = "");
+  // A failed or cancelled job's folder goes (parts, logs, results half merged).
+  void remove_files(JobState state) override;
+  void wake() override { wake_.notify_all(); }
 
   RenderService& service_;
-  JobStore& store_;
-  const std::filesystem::path dir_;
   const SlurmOptions options_;
   std::string parts_job_, merge_job_;  // Slurm job ids
   int parts_ = 0;
   uint32_t samples_per_part_ = 0;
   double submitted_ = 0;  // Unix time
-  mutable std::mutex mutex_;  // guards job_
-  std::condition_variable wake_;
-  JobRecord job_;
-  std::atomic<bool> cancel_{false}, stop_{false}, finished_{false};
+  std::condition_variable wake_;  // with mutex_: a stop or a cancel ends the wait between polls
+  std::atomic<bool> stop_{false};
   std::thread thread_;
 };
 
