@@ -6,6 +6,7 @@
 #include "common/scene_data.glsl"
 #include "common/random.glsl"
 #include "common/sobol.glsl"
+#include "common/sampler.glsl"
 #include "common/sampling.glsl"
 #include "geometry/model.glsl"
 #include "integrator/chart_ray.glsl"

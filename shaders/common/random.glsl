@@ -21,11 +21,11 @@ float rngNext(inout uint state) {
   return float(word >> 8) * (1.0 / 16777216.0);
 }
 
-// Russian roulette: a path survives with probability q = min(1, max throughput) and is divided
-// by q, so the expectation is unchanged and dim paths end early.
-bool survivesRussianRoulette(inout vec3 throughput, inout uint rng) {
+// Russian roulette on the uniform u: a path survives with probability q = min(1, max
+// throughput) and is divided by q, so the expectation is unchanged and dim paths end early.
+bool survivesRussianRoulette(inout vec3 throughput, float u) {
   float q = min(1.0, max(throughput.r, max(throughput.g, throughput.b)));
-  if (rngNext(rng) >= q) return false;
+  if (u >= q) return false;
   throughput /= q;
   return true;
 }

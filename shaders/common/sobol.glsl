@@ -22,20 +22,37 @@ uint nestedUniformScramble(uint x, uint seed) {
   return bitfieldReverse(laineKarrasPermutation(bitfieldReverse(x), seed));
 }
 
-// Sobol's second dimension (primitive polynomial x + 1): direction numbers v_k = v_{k-1} ^
-// (v_{k-1} >> 1) from v_0 = 2^31. The first dimension is the bit reversal of the index.
-uint sobolSecond(uint index) {
-  uint v = 0x80000000u, result = 0u;
-  for (; index != 0u; index >>= 1u, v ^= v >> 1u)
-    if ((index & 1u) != 0u) result ^= v;
-  return result;
+// Sobol's second dimension (primitive polynomial x + 1) has direction numbers v_k = v_{k-1} ^
+// (v_{k-1} >> 1) from v_0 = 2^31: its generator matrix is Pascal's triangle mod 2, whose
+// product with the index, in bit-reversed order, takes five masked shifts instead of a loop
+// over the index's bits. The first dimension is the bit reversal of the index.
+uint pascalProduct(uint v) {
+  v ^= v >> 16u;
+  v ^= (v & 0xff00ff00u) >> 8u;
+  v ^= (v & 0xf0f0f0f0u) >> 4u;
+  v ^= (v & 0xccccccccu) >> 2u;
+  v ^= (v & 0xaaaaaaaau) >> 1u;
+  return v;
 }
+
+uint sobolSecond(uint index) { return bitfieldReverse(pascalProduct(index)); }
 
 // Point `index` of the scrambled, shuffled sequence of `seed`, in 32-bit fixed point.
 uvec2 sobolBits(uint index, uint seed) {
   uint shuffled = nestedUniformScramble(index, pcgHash(seed));
-  return uvec2(nestedUniformScramble(bitfieldReverse(shuffled), pcgHash(seed ^ 0x9e3779b9u)),
-               nestedUniformScramble(sobolSecond(shuffled), pcgHash(seed ^ 0x7f4a7c15u)));
+  // The first dimension is the reversed index, so its scramble needs no reversal going in:
+  // nestedUniformScramble(bitfieldReverse(i), h) = bitfieldReverse(laineKarrasPermutation(i, h)).
+  // The same for the second, whose reversal is pascalProduct itself.
+  return uvec2(bitfieldReverse(laineKarrasPermutation(shuffled, pcgHash(seed ^ 0x9e3779b9u))),
+               bitfieldReverse(laineKarrasPermutation(pascalProduct(shuffled), pcgHash(seed ^ 0x7f4a7c15u))));
+}
+
+// The seed of the sequence of dimension pair `pair` of a pixel's half (common/sampler.glsl):
+// that of pair 0 plus a Weyl step per pair (sobolBits hashes it three times over).
+uint pathPairSeed(uint pairZeroSeed, uint pair) { return pairZeroSeed + pair * 0x9e3779b9u; }
+
+uint pathSamplerSeed(uint pixel, uint parity, uint pair, uint seed) {
+  return pathPairSeed(rngSeed(pixel, parity, seed ^ 0x5bd1e995u), pair);
 }
 
 // The same point in [0, 1)^2, 24 bits each (exact in float, as rngNext).

@@ -4,7 +4,7 @@
 #ifndef PAPER_INTEGRATOR_GLSL
 #define PAPER_INTEGRATOR_GLSL
 
-vec3 paperRadiance(GeodesicRay ray, inout uint rng) {
+vec3 paperRadiance(GeodesicRay ray, PathSampler samples) {
   vec3 radiance = vec3(0.0);
   vec3 throughput = vec3(1.0);
   for (uint depth = 0u; depth <= frame.maxDepth; ++depth) {
@@ -21,10 +21,14 @@ vec3 paperRadiance(GeodesicRay ray, inout uint rng) {
     radiance += throughput * directIllumination(s, local, n, ng, -incoming, m);
 #endif
     if (depth == frame.maxDepth) break;
+    vec2 lobeRoulette = bounceSample(samples, depth, PAIR_LOBE_ROULETTE);
     vec3 direction, weight;
-    if (!sampleBounce(n, ng, incoming, m, rng, direction, weight)) break;
+    if (!sampleBounce(n, ng, incoming, m, lobeRoulette.x,
+                      bounceSample(samples, depth, PAIR_DIRECTION), direction, weight))
+      break;
     throughput *= weight;
-    if (frame.russianRoulette != 0u && depth >= 1u && !survivesRussianRoulette(throughput, rng))
+    if (frame.russianRoulette != 0u && depth >= 1u &&
+        !survivesRussianRoulette(throughput, lobeRoulette.y))
       break;
     vec4 origin = offsetFromSurface(s.position, s.geometricNormal);
     ray = GeodesicRay(origin, normalizeTangent(origin, fromLocal(local, direction)), s.cell, ~0u);

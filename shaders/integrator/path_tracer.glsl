@@ -3,8 +3,9 @@
 #ifndef PATH_TRACER_GLSL
 #define PATH_TRACER_GLSL
 
-// One sample of pixel `pixel`: a camera geodesic through the pinhole at `jitter` in the pixel.
-vec3 pixelSample(uvec2 pixel, vec2 jitter, inout uint rng) {
+// One sample of pixel `pixel`: a camera geodesic through the pinhole at `jitter` in the pixel,
+// its other dimensions drawn from `samples`.
+vec3 pixelSample(uvec2 pixel, vec2 jitter, PathSampler samples) {
   vec2 ndc = 2.0 * (vec2(pixel) + jitter) / vec2(frame.width, frame.height) - 1.0;
   vec3 dir = normalize(vec3(ndc.x * frame.tanHalfFovY * frame.aspect, -ndc.y * frame.tanHalfFovY, -1.0));
   GeodesicRay ray;
@@ -13,11 +14,11 @@ vec3 pixelSample(uvec2 pixel, vec2 jitter, inout uint rng) {
   ray.cell = frame.cameraCell;
   ray.enteredFace = ~0u;
 #if defined(LIGHTING_PAPER) && defined(LIGHTING_PHYSICAL)
-  return frame.lighting == 0u ? paperRadiance(ray, rng) : physicalRadiance(ray, rng);
+  return frame.lighting == 0u ? paperRadiance(ray, samples) : physicalRadiance(ray, samples);
 #elif defined(LIGHTING_PAPER)
-  return paperRadiance(ray, rng);
+  return paperRadiance(ray, samples);
 #else
-  return physicalRadiance(ray, rng);
+  return physicalRadiance(ray, samples);
 #endif
 }
 
@@ -31,13 +32,10 @@ void accumulatePixel(uvec2 launch) {
   vec4 halves[2] = vec4[2](vec4(0.0), vec4(0.0));
   for (uint i = 0u; i < push.sampleCount; ++i) {
     uint sampleIndex = push.sampleStart + i;
-    uint rng = rngSeed(index, sampleIndex, frame.seed);
-    // Where in the pixel: a scrambled Sobol sequence per pixel and half (common/sobol.glsl).
-    // The even- and odd-numbered samples are two independent sequences, each stratified over
-    // its own runs, so the halves stay independent unbiased estimates and their difference the
-    // error estimate it was with independent samples. Every other dimension draws from rng.
-    vec2 jitter = sobolSample(sampleIndex >> 1u, rngSeed(index, sampleIndex & 1u, frame.seed ^ 0x5bd1e995u));
-    vec3 value = pixelSample(pixel, jitter, rng);
+    // Every dimension of the path, the position in the pixel first, is a scrambled Sobol
+    // sequence per pixel and half (common/sampler.glsl).
+    PathSampler samples = pathSampler(index, sampleIndex);
+    vec3 value = pixelSample(pixel, samplePair(samples, 0u), samples);
     // A NaN/Inf sample would poison the pixel forever: drop its value, and count it.
     if (any(isnan(value)) || any(isinf(value))) {
       atomicAdd(nonFiniteSamples, 1u);

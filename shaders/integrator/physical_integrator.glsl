@@ -8,8 +8,6 @@
 #define PHYSICAL_INTEGRATOR_GLSL
 
 #if defined(LIGHT_SAMPLING)
-vec4 rng4(inout uint rng) { return vec4(rngNext(rng), rngNext(rng), rngNext(rng), rngNext(rng)); }
-
 // True when something lies between the surface and the light point. The shadow geodesic
 // starts off the surface and aims at the light point itself (from the shifted start the
 // sample's own direction and distance would reach past a sphere's silhouette, or into a
@@ -41,9 +39,15 @@ bool occludedTowards(Surface s, LightSample ls) {
 // Direct light at s by one light sample: f cos L / pdf, weighted against BSDF sampling
 // unless light sampling alone is asked for.
 vec3 nextEventEstimate(Surface s, LocalFrame local, vec3 n, vec3 wo, Material m, bool last,
-                       bool lightOnly, inout uint rng) {
+                       bool lightOnly, PathSampler samples, uint depth) {
+#if defined(HAS_SPHERE_EMITTERS) || defined(HAS_TRIANGLE_EMITTERS)
+  vec2 onLight = bounceSample(samples, depth, PAIR_LIGHT_POINT);
+#else
+  const vec2 onLight = vec2(0.0);  // point lights have no extent to sample
+#endif
+  vec4 u = vec4(bounceSample(samples, depth, PAIR_LIGHT_CHOICE), onLight);
   LightSample ls;
-  if (!sampleLight(s.position, s.geometricNormal, local, rng4(rng), ls)) return vec3(0.0);
+  if (!sampleLight(s.position, s.geometricNormal, local, u, ls)) return vec3(0.0);
   vec3 wi = toLocal(local, ls.direction);
   float cosI = dot(wi, n);
   if (cosI <= 0.0 || modelInner(ls.direction, s.geometricNormal) <= 0.0) return vec3(0.0);
@@ -55,7 +59,7 @@ vec3 nextEventEstimate(Surface s, LocalFrame local, vec3 n, vec3 wo, Material m,
 }
 #endif
 
-vec3 physicalRadiance(GeodesicRay ray, inout uint rng) {
+vec3 physicalRadiance(GeodesicRay ray, PathSampler samples) {
   vec3 radiance = vec3(0.0), throughput = vec3(1.0);
   bool misWeighted = false;  // the last bounce was a smooth BSDF sample light sampling shares
   float bsdfDensity = 0.0;
@@ -91,11 +95,12 @@ vec3 physicalRadiance(GeodesicRay ray, inout uint rng) {
     bool last = depth == frame.maxDepth;
 #if defined(LIGHT_SAMPLING)
     if (nee && hasSmoothLobe(m))
-      radiance += throughput * nextEventEstimate(s, local, n, wo, m, last, lightOnly, rng);
+      radiance += throughput * nextEventEstimate(s, local, n, wo, m, last, lightOnly, samples, depth);
 #endif
+    vec2 direction2 = bounceSample(samples, depth, PAIR_DIRECTION);
+    vec2 lobeRoulette = bounceSample(samples, depth, PAIR_LOBE_ROULETTE);
     BsdfSample bs;
-    if (!sampleBsdf(m, n, wo, s.frontFace, vec3(rngNext(rng), rngNext(rng), rngNext(rng)), bs))
-      break;
+    if (!sampleBsdf(m, n, wo, s.frontFace, vec3(lobeRoulette.x, direction2), bs)) break;
     // After the last bounce light sampling alone covers the smooth lobes; delta lobes still
     // look for an emitter.
     if (last && nee && !bs.delta) break;
@@ -105,7 +110,8 @@ vec3 physicalRadiance(GeodesicRay ray, inout uint rng) {
     throughput *= bs.weight;
     misWeighted = nee && !bs.delta;
     bsdfDensity = bs.pdf;
-    if (frame.russianRoulette != 0u && depth >= 3u && !survivesRussianRoulette(throughput, rng))
+    if (frame.russianRoulette != 0u && depth >= 3u &&
+        !survivesRussianRoulette(throughput, lobeRoulette.y))
       break;
     from = s.position;
     vec4 origin = offsetFromSurface(s.position, side);

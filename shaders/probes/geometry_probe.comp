@@ -64,6 +64,8 @@ struct ProbeResult {
   vec4 areas;              // areaFactorBetween(p, q), sphereAreaFactor(geodesicDistance(p, q))
   uvec4 sobol;             // sobolBits(rng.y, rng.w), nestedUniformScramble(rng.x, rng.z),
                            // sobolSecond(rng.y)
+  uvec4 pathSeeds;         // pathSamplerSeed(rng.x, rng.y & 1, rng.z & 15, rng.w), the same
+                           // for pairs 0 and 1
 };
 
 layout(std430, binding = 0) readonly buffer Cases { ProbeCase cases[]; };
@@ -117,6 +119,9 @@ void main() {
   r.hashes = uvec4(pcgHash(c.rng.w), seed, state, 0u);
   r.sobol = uvec4(sobolBits(c.rng.y, c.rng.w), nestedUniformScramble(c.rng.x, c.rng.z),
                   sobolSecond(c.rng.y));
+  r.pathSeeds = uvec4(pathSamplerSeed(c.rng.x, c.rng.y & 1u, c.rng.z & 15u, c.rng.w),
+                      pathSamplerSeed(c.rng.x, c.rng.y & 1u, 0u, c.rng.w),
+                      pathSamplerSeed(c.rng.x, c.rng.y & 1u, 1u, c.rng.w), 0u);
 
   results[i] = r;
 }

@@ -162,7 +162,7 @@ TEST_P(GlslReference, EveryRoutineMatchesItsDoubleTwin) {
   for (const Routine& r : all) r.agreement.print(geometry_name(k));
 }
 
-TEST_P(GlslReference, RandomNumbersAreBitExact) {  // and the Sobol points
+TEST_P(GlslReference, RandomNumbersAreBitExact) {  // and the Sobol points and their seeds
   std::vector<ProbeCase> cases;
   for (int i = 0; i < 4096; ++i) cases.push_back(maker.make());
   for (uint32_t edge : {0u, 1u, 0x7FFFFFFFu, 0x80000000u, 0xFFFFFFFFu}) {
@@ -185,6 +185,10 @@ TEST_P(GlslReference, RandomNumbersAreBitExact) {  // and the Sobol points
     ASSERT_EQ(out.sobol[1], point.y) << "case " << i;
     ASSERT_EQ(out.sobol[2], nested_uniform_scramble(in[0], in[2])) << "case " << i;
     ASSERT_EQ(out.sobol[3], sobol_second(in[1])) << "case " << i;
+    // The seeds of a path's dimension pairs (shaders/common/sampler.glsl).
+    ASSERT_EQ(out.path_seeds[0], path_sampler_seed(in[0], in[1] & 1u, in[2] & 15u, in[3])) << "case " << i;
+    ASSERT_EQ(out.path_seeds[1], path_sampler_seed(in[0], in[1] & 1u, 0, in[3])) << "case " << i;
+    ASSERT_EQ(out.path_seeds[2], path_sampler_seed(in[0], in[1] & 1u, 1, in[3])) << "case " << i;
   }
 }
 

@@ -1,7 +1,8 @@
-// The pixel samples' positions (geometry/sobol.h, twin of shaders/common/sobol.glsl; the probe
-// test holds them bit for bit): every aligned run of 2^m points of a pixel's sequence is a
-// (0, m, 2)-net, and each point, over the pixels' seeds, is uniform (so the estimate stays
-// unbiased). Independent random positions fail the first.
+// The sample dimensions of camera paths (geometry/sobol.h, twin of shaders/common/sobol.glsl
+// and sampler.glsl; the probe test holds them bit for bit): every aligned run of 2^m points of
+// a pixel's sequence is a (0, m, 2)-net, in every pair of dimensions of every bounce; each
+// point, over the pixels' seeds, is uniform (so the estimate stays unbiased); different pairs
+// and the two halves are independent. Independent random positions fail the first.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -71,6 +72,65 @@ TEST(Sobol, EachPointIsUniformOverThePixelsSeeds) {
     const double sigma = std::sqrt(1.0 / 12 / n);
     EXPECT_NEAR(sum_u / n, 0.5, 5 * sigma) << "index " << index;
     EXPECT_NEAR(sum_v / n, 0.5, 5 * sigma) << "index " << index;
+  }
+}
+
+// Every pair of dimensions of a path (the pixel position, then four per bounce) is a net in
+// every aligned run of each half's samples, and pair 0 is the sequence the pixel positions had.
+TEST(Sobol, EveryDimensionPairOfAPathIsStratified) {
+  EXPECT_EQ(path_sampler_seed(77, 1, 0, 42), rng_seed(77, 1, 42 ^ 0x5bd1e995u));
+  for (uint32_t parity : {0u, 1u})
+    for (uint32_t pair = 0; pair < 1 + 4 * 8; ++pair)
+      for (int m : {2, 5, 8}) {
+        std::vector<SobolPoint> points;
+        const uint32_t seed = path_sampler_seed(1234, parity, pair, 42);
+        for (uint32_t i = 0; i < (1u << m); ++i) points.push_back(sobol_sample((3u << m) + i, seed));
+        EXPECT_TRUE(is_net(points, m, true)) << "parity " << parity << " pair " << pair << " m " << m;
+      }
+}
+
+// The pairs are paired at random: across 256 samples of a pixel, the first coordinates of two
+// different pairs (or of one pair in the two halves) are uncorrelated (|r| below 4.5 sigma of
+// zero, 1/sqrt(256) each); the same pair is, of course, itself.
+TEST(Sobol, DimensionPairsAndHalvesAreMutuallyIndependent) {
+  auto coordinates = [](uint32_t parity, uint32_t pair, uint32_t pixel) {
+    std::vector<double> u;
+    for (uint32_t i = 0; i < 256; ++i) u.push_back(sobol_sample(i, path_sampler_seed(pixel, parity, pair, 9)).u());
+    return u;
+  };
+  auto correlation = [](const std::vector<double>& a, const std::vector<double>& b) {
+    double sa = 0, sb = 0, sab = 0, saa = 0, sbb = 0;
+    const double n = double(a.size());
+    for (size_t i = 0; i < a.size(); ++i) {
+      sa += a[i]; sb += b[i]; sab += a[i] * b[i]; saa += a[i] * a[i]; sbb += b[i] * b[i];
+    }
+    return (sab / n - sa * sb / n / n) /
+           std::sqrt((saa / n - sa * sa / n / n) * (sbb / n - sb * sb / n / n));
+  };
+  const double bound = 4.5 / std::sqrt(256.0);
+  for (uint32_t pixel : {0u, 5u, 99999u}) {
+    for (uint32_t pair = 0; pair < 12; ++pair) {
+      EXPECT_LT(std::abs(correlation(coordinates(0, pair, pixel), coordinates(0, pair + 1, pixel))), bound)
+          << "pixel " << pixel << " pairs " << pair << ", " << pair + 1;
+      EXPECT_LT(std::abs(correlation(coordinates(0, pair, pixel), coordinates(1, pair, pixel))), bound)
+          << "pixel " << pixel << " pair " << pair << ", even and odd";
+    }
+    EXPECT_NEAR(correlation(coordinates(1, 3, pixel), coordinates(1, 3, pixel)), 1.0, 1e-12);
+  }
+}
+
+// The five masked shifts equal the definition by direction numbers, bit by bit.
+TEST(Sobol, SecondDimensionEqualsItsDirectionNumbers) {
+  auto by_directions = [](uint32_t index) {
+    uint32_t v = 0x80000000u, result = 0;
+    for (; index != 0; index >>= 1, v ^= v >> 1)
+      if (index & 1u) result ^= v;
+    return result;
+  };
+  uint32_t state = rng_seed(5, 6, 7);
+  for (uint32_t i = 0; i < 70000; ++i) {
+    const uint32_t index = i < 65536 ? i : uint32_t(rng_next(state) * 4294967296.0) | 0x80000001u;
+    ASSERT_EQ(sobol_second(index), by_directions(index)) << "index " << index;
   }
 }
 
