@@ -36,6 +36,13 @@ double resolve_cutoff(const Scene& scene, double circumradius) {
   return k == GeometryKind::Hyperbolic ? std::min(circumradius, 1.0) : circumradius;
 }
 
+bool is_antipodal_map(const Mat4& g) {
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c)
+      if (std::abs(g.m[r][c] + (r == c ? 1.0 : 0.0)) > 1e-9) return false;
+  return true;
+}
+
 struct Emitting {
   GpuEmitter gpu{};
   double power = 0;
@@ -179,6 +186,13 @@ EmitterTable build_emitters(const Scene& scene) {
       table.cutoff /= 2;
     }
   }
+  // Where the group holds the antipodal map -1 (the Poincare space, lens spaces of even order),
+  // x and -x are copies of one point: every geodesic from a surface point that runs past pi
+  // crosses the copy of its own surface at the antipode. The long way round then brings no
+  // light, and light sampling leaves it out (sampling it only costs variance).
+  if (k == GeometryKind::Spherical && table.cutoff > kPi &&
+      std::any_of(group.begin(), group.end(), is_antipodal_map))
+    table.cutoff = kPi;
   double cdf = 0;
   for (Emitting& e : found) {
     e.gpu.pmf = float(e.power / total);

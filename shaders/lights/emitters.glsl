@@ -16,7 +16,6 @@ const uint EMITTER_POINT = 0u;
 const uint EMITTER_SPHERE = 1u;
 const uint EMITTER_TRIANGLE = 2u;
 const float FULL_TURN = 6.28318530717958647692;
-const float ONE_BELOW = 0.99999994;  // the largest float below 1
 
 // True when every geodesic from a point at distance d from the sphere's centre meets it: the
 // point is inside it, or (S3) the sphere holds the point's antipode (d + r >= pi), where every
@@ -60,8 +59,11 @@ vec2 imageWeights(Emitter e, vec4 x, vec4 c, vec4 ng) {
   float spread = max(areaFactorBetween(x, c), 1e-12);  // A(2 pi - d) = A(d) in S3
 #if defined(HAS_POINT_LIGHTS)
   if (e.kind == EMITTER_POINT) {
+    // Its irradiance I cos / A(d): <c - x, ng> = cos sqrt(A(d)) (x is orthogonal to ng, and
+    // the tangent towards c has length sqrt(A)); the long way round leaves by the opposite
+    // direction.
     float side = modelInner(c - x, ng);
-    return branches * vec2(side < 0.0 ? 0.0 : 1.0, side > 0.0 ? 0.0 : 1.0) / spread;
+    return branches * vec2(max(side, 0.0), max(-side, 0.0)) / (spread * sqrt(spread));
   }
 #endif
   return branches * min(4.0 * PI, e.radiance.w / spread);
@@ -108,27 +110,25 @@ bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) 
   if (EMITTER_COUNT == 0u) return false;
   uint index = chooseEmitter(u.x);
   Emitter e = emitters[index];
-  // An image and branch in proportion to their weights, in one pass: each replaces the
-  // choice so far with probability its weight over the running total (a weighted reservoir of
-  // one), and the uniform is rescaled onto the part of [0, 1) that decided it, so one number
-  // serves every step.
-  float total = 0.0, w = 0.0, pick = u.y;
-  uint image = e.imageCount, branch = 0u;
+  // An image and branch in proportion to their weights, by inverting their running sum at
+  // u.y: the map from u.y to the choice is monotone, so samples stratified in u.y (the pixel's
+  // Sobol points, common/sampler.glsl) choose every image in close to its share.
+  float total = 0.0;
   for (uint j = 0u; j < e.imageCount; ++j) {
     vec2 weights = imageWeights(e, x, lightImages[e.imageBegin + j].center, ng);
-    for (uint b = 0u; b < branchCount(); ++b) {
-      float wb = weights[b];
-      if (wb <= 0.0) continue;
-      total += wb;
-      float keep = wb / total;
-      if (pick < keep) {
-        image = j;
-        branch = b;
-        w = wb;
-        pick = min(pick / keep, ONE_BELOW);
-      } else {
-        pick = (pick - keep) / (1.0 - keep);
-      }
+    total += weights.x + weights.y;
+  }
+  if (total <= 0.0) return false;
+  float target = u.y * total, w = 0.0;
+  uint image = e.imageCount, branch = 0u;
+  for (uint j = 0u; j < e.imageCount && target >= 0.0; ++j) {
+    vec2 weights = imageWeights(e, x, lightImages[e.imageBegin + j].center, ng);
+    for (uint b = 0u; b < branchCount() && target >= 0.0; ++b) {
+      if (weights[b] <= 0.0) continue;
+      image = j;  // the last one with weight, should rounding leave target past the sum
+      branch = b;
+      w = weights[b];
+      target -= w;
     }
   }
   if (image == e.imageCount) return false;

@@ -1,10 +1,12 @@
 // The physical model against closed forms: white furnaces in E3, H3 and S3 (radiance
 // L_e / (1 - albedo)), a point light's irradiance I cos / A(d) on a small patch in each
 // geometry, and light sampling (NEE + MIS) agreeing with BSDF sampling alone.
+#include <algorithm>
 #include <cmath>
 #include <string>
 
 #include "geometry/model.h"
+#include "render/emitters.h"
 #include "render_fixture.h"
 
 namespace geodesic::test {
@@ -91,6 +93,62 @@ TEST(PointLight, IrradianceFallsOffAsOneOverAreaFactor) {
   expect_point_light_falloff(GeometryKind::Spherical, 2.4);   // past pi/2: sin^2 d grows again
 }
 
+// A point light in a quotient reaches a point along one geodesic per image (and in S3 also
+// the long way round): next-event estimation picks one of them in proportion to I cos / A(d)
+// (shaders/lights/emitters.glsl, by inverting the running sum at a Sobol dimension), so the
+// mean over samples must be the whole sum. A small white patch (albedo 0.5) at the cell's
+// centre, nothing else in the space, so no image is hidden: the radiance is
+// 0.5 / pi * I * sum over the kept images and branches of max(0, cos) / A(d).
+void expect_point_light_images_sum(const std::string& geometry, const std::string& manifold,
+                                   const Vec3& light, double cutoff) {
+  const double half = 0.004;
+  const Scene scene = scene_from_json(R"({"geometry": ")" + geometry + R"(", "manifold": )" +
+    manifold + R"(, "camera": {"position": [0, 0, 0.05], "look_at": [0, 0, 0], "fov_y": 4},
+    "materials": {"white": {"diffuse": 0.5}},
+    "objects": [{"type": "quad", "material": "white", "corner": [)" + std::to_string(-half) +
+    ", " + std::to_string(-half) + R"(, 0], "edge_u": [)" + std::to_string(2 * half) +
+    R"(, 0, 0], "edge_v": [0, )" + std::to_string(2 * half) + R"(, 0]}],
+    "lights": [{"type": "point", "position": [)" + std::to_string(light.x) + ", " +
+    std::to_string(light.y) + ", " + std::to_string(light.z) + R"(], "intensity": 1}],
+    "render": {"width": 8, "height": 8, "max_depth": 0, "lighting": "physical",
+               "light_cutoff": )" + std::to_string(cutoff) + "}}");
+  const GeometryKind kind = scene.geometry;
+  const EmitterTable table = build_emitters(scene);
+  ASSERT_EQ(table.emitters.size(), 1u);
+  const GpuEmitter& e = table.emitters[0];
+  ASSERT_GT(e.image_count, 8u) << "a test of the choice among images needs many";
+  const bool antipodal = manifold.find("poincare") != std::string::npos;
+  if (kind == GeometryKind::Spherical) EXPECT_NEAR(table.cutoff, antipodal ? M_PI : 2 * M_PI, 1e-5);
+  const Vec4 x = model::origin(), normal{0, 0, 1, 0};
+  const bool both_ways = kind == GeometryKind::Spherical && table.cutoff > M_PI;
+  double sum = 0;
+  for (uint32_t j = 0; j < e.image_count; ++j) {
+    const auto& c = table.images[e.image_begin + j].center;
+    const Vec4 centre{c[0], c[1], c[2], c[3]};
+    const double spread = model::area_factor_between(kind, x, centre);
+    const double along = model::inner(kind, centre - x, normal);  // cos sqrt(A)
+    sum += std::max(along, 0.0) / (spread * std::sqrt(spread));
+    if (both_ways) sum += std::max(-along, 0.0) / (spread * std::sqrt(spread));
+  }
+  const double expected = 0.5 / M_PI * sum;
+  Renderer renderer(device(), scene);
+  renderer.add_samples(512);
+  EXPECT_NEAR(luminance_of(mean(renderer.image())), expected, 0.02 * expected)
+      << geometry << " " << manifold << ", " << e.image_count << " images";
+  EXPECT_EQ(renderer.non_finite_samples(), 0u);
+}
+
+// In S3 both ways round where the group lacks the antipodal map (L(11, 3)); where it holds it
+// (the Poincare space) the long way round meets the patch's own copy at the antipode, and
+// light sampling leaves it out (server/render/emitters.cpp).
+TEST(PointLight, ItsImagesInAQuotientSumToTheirClosedForm) {
+  expect_point_light_images_sum("euclidean", R"({"type": "torus", "size": 1.5})", {0.3, -0.2, 0.4}, 4);
+  expect_point_light_images_sum("spherical", R"({"type": "lens", "p": 11, "q": 3, "max_crossings": 48})",
+                                {0.1, 0.05, 0.15}, 2 * M_PI);
+  expect_point_light_images_sum("spherical", R"({"type": "poincare-dodecahedral", "max_crossings": 48})",
+                                {0.1, 0.05, 0.15}, 2 * M_PI);
+}
+
 // The same scene lit by area lights, rendered with light sampling + BSDF sampling (MIS) and
 // with BSDF sampling alone: equal within the noise both report.
 void expect_mis_matches_bsdf_sampling(Scene scene, uint32_t spp) {
@@ -120,13 +178,13 @@ TEST(Mis, AgreesWithBsdfSamplingInEveryGeometry) {
     expect_mis_matches_bsdf_sampling(load_scene_file(source_path("scenes/") / name), 64);
 }
 
-// Light sampling chooses among an emitter's images in one pass (shaders/lights/emitters.glsl,
-// a weighted reservoir on one uniform): in the Poincare dodecahedral space with the cutoff past
-// pi, 64 images each reached both ways round, 128 candidates per shading point. Light
-// sampling alone and MIS each converge to what BSDF sampling finds.
-TEST(Mis, ChoosesAmongManyImagesWithoutBias) {
-  const Scene scene = scene_from_json(R"({"geometry": "spherical",
-    "manifold": {"type": "poincare-dodecahedral", "max_crossings": 24},
+// Light sampling chooses among an emitter's images (shaders/lights/emitters.glsl, the running
+// sum inverted at one uniform): in L(11, 3) with the cutoff past pi, 11 images each reached
+// both ways round; in the Poincare dodecahedral space 64 images, the short way only (the group
+// holds the antipodal map, and BSDF sampling, which finds whatever the long way would bring,
+// agrees). Light sampling alone and MIS each converge to what BSDF sampling finds.
+void expect_many_images_unbiased(const std::string& manifold) {
+  const Scene scene = scene_from_json(R"({"geometry": "spherical", "manifold": )" + manifold + R"(,
     "camera": {"position": [0.05, 0.03, 0.24], "look_at": [0, 0, 0], "fov_y": 80},
     "materials": {"teal": {"diffuse": [0.1, 0.6, 0.6]}, "lamp": {"emission": 4},
                   "gold": {"diffuse": [0.85, 0.7, 0.35]}},
@@ -139,6 +197,11 @@ TEST(Mis, ChoosesAmongManyImagesWithoutBias) {
   Scene light_alone = scene;
   light_alone.render.light_sampling = LightSampling::Light;
   expect_mis_matches_bsdf_sampling(light_alone, 128);
+}
+
+TEST(Mis, ChoosesAmongManyImagesWithoutBias) {
+  expect_many_images_unbiased(R"({"type": "lens", "p": 11, "q": 3, "max_crossings": 24})");
+  expect_many_images_unbiased(R"({"type": "poincare-dodecahedral", "max_crossings": 24})");
 }
 
 }  // namespace
