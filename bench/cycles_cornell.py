@@ -1,7 +1,12 @@
-# Blender Cycles baseline for bench/run.sh: builds the same scene from Geodesic's JSON (quads,
-# boxes and spheres with diffuse / glossy / mirror materials, point lights), renders it on the
-# CPU with 2 threads, no denoising and no adaptive sampling, and prints paths/s.
-#   blender -b --factory-startup -P bench/cycles_cornell.py -- SCENE.json SPP [OUT.png]
+# Blender Cycles baseline for bench/run.sh and bench/error_per_second.sh: builds the same scene
+# from Geodesic's JSON (quads and spheres with diffuse / mirror materials, point lights),
+# renders it on the CPU with 2 threads, no denoising and no adaptive sampling, and prints
+# paths/s. Spheres are Cycles' analytic spheres (a point of a point cloud, made by geometry
+# nodes), not meshes; the pixel filter is a 1-px box, as Geodesic's uniform jitter in the pixel.
+#   blender -b --factory-startup -P bench/cycles_cornell.py -- SCENE.json SPP [OUT.png|OUT.exr]
+#   blender -b --factory-startup -P bench/cycles_cornell.py -- SCENE.json SPP,SPP,... DIR [SEED]
+# The second form renders each sample count to DIR/cycles-SPP.exr (linear radiance) and prints
+# one line per render: "cycles-render: SPP SECONDS FILE", SECONDS without scene setup.
 import json
 import math
 import os
@@ -12,8 +17,11 @@ import bpy
 from mathutils import Matrix, Vector
 
 args = sys.argv[sys.argv.index("--") + 1:]
-scene_path, spp = args[0], int(args[1])
+scene_path = args[0]
+series = [int(n) for n in args[1].split(",")]
+spp = series[0]
 out_path = args[2] if len(args) > 2 else "/tmp/cycles-baseline.png"
+seed = int(args[3]) if len(args) > 3 else 0
 doc = json.load(open(scene_path))
 
 
@@ -61,16 +69,33 @@ def add_mesh(name, verts, faces, material):
     scene.collection.objects.link(obj)
 
 
+def add_sphere(name, center, radius, material):
+    """One vertex turned into a point-cloud point, which Cycles intersects as a true sphere."""
+    mesh = bpy.data.meshes.new(name)
+    mesh.from_pydata([(0, 0, 0)], [], [])
+    obj = bpy.data.objects.new(name, mesh)
+    obj.location = center
+    tree = bpy.data.node_groups.new(name, "GeometryNodeTree")
+    tree.inputs.new("NodeSocketGeometry", "Geometry")
+    tree.outputs.new("NodeSocketGeometry", "Geometry")
+    source, sink = tree.nodes.new("NodeGroupInput"), tree.nodes.new("NodeGroupOutput")
+    points = tree.nodes.new("GeometryNodeMeshToPoints")
+    points.inputs["Radius"].default_value = radius
+    paint = tree.nodes.new("GeometryNodeSetMaterial")
+    paint.inputs["Material"].default_value = materials[material]
+    tree.links.new(source.outputs[0], points.inputs["Mesh"])
+    tree.links.new(points.outputs["Points"], paint.inputs["Geometry"])
+    tree.links.new(paint.outputs["Geometry"], sink.inputs[0])
+    obj.modifiers.new("sphere", "NODES").node_group = tree
+    scene.collection.objects.link(obj)
+
+
 for i, o in enumerate(doc["objects"]):
     if o["type"] == "quad":
         c, u, v = Vector(o["corner"]), Vector(o["edge_u"]), Vector(o["edge_v"])
         add_mesh(f"quad{i}", [c, c + u, c + u + v, c + v], [(0, 1, 2, 3)], o["material"])
     elif o["type"] == "sphere":
-        bpy.ops.mesh.primitive_uv_sphere_add(segments=64, ring_count=32, radius=o["radius"],
-                                             location=o["center"])
-        obj = bpy.context.active_object
-        bpy.ops.object.shade_smooth()
-        obj.data.materials.append(materials[o["material"]])
+        add_sphere(f"sphere{i}", o["center"], o["radius"], o["material"])
     else:
         raise SystemExit(f"cycles_cornell.py: object type {o['type']} not supported")
 
@@ -100,6 +125,16 @@ scene.render.threads_mode = "FIXED"
 scene.render.threads = 2
 scene.cycles.use_adaptive_sampling = False
 scene.cycles.use_denoising = False
+scene.cycles.seed = seed
+# Unbiased as Geodesic is: no sample clamping (Cycles clamps indirect light at 10 by default)
+# and no glossy filter (which roughens a mirror seen after a diffuse bounce, so that light
+# sampling finds the point light's caustics through it: 2.8 % more light in cornell-shared).
+scene.cycles.sample_clamp_direct = 0.0
+scene.cycles.sample_clamp_indirect = 0.0
+scene.cycles.blur_glossy = 0.0
+scene.cycles.pixel_filter_type = "BOX"
+scene.cycles.filter_width = 1.0
+scene.view_settings.view_transform = "Standard"
 depth = render.get("max_depth", 5)
 scene.cycles.max_bounces = depth
 scene.cycles.diffuse_bounces = depth
@@ -112,7 +147,9 @@ scene.render.resolution_x = render.get("width", 512)
 scene.render.resolution_y = render.get("height", 512)
 scene.render.resolution_percentage = 100
 scene.render.filepath = out_path
-
+if out_path.endswith(".exr") or len(series) > 1:
+    scene.render.image_settings.file_format = "OPEN_EXR"
+    scene.render.image_settings.color_depth = "32"
 
 
 def timed_render(samples):
@@ -125,6 +162,12 @@ def timed_render(samples):
 # Marginal throughput: a 1-sample render measures scene sync and BVH build, which the
 # spp-sample render also pays; their difference is the time spent tracing paths.
 setup = timed_render(1)
+if len(series) > 1 or os.path.isdir(out_path):
+    for n in series:
+        scene.render.filepath = os.path.join(out_path, f"cycles-{n}.exr")
+        seconds = timed_render(n)
+        print(f"cycles-render: {n} {seconds - setup:.4f} {scene.render.filepath}")
+    sys.exit(0)
 seconds = timed_render(spp)
 pixels = scene.render.resolution_x * scene.render.resolution_y
 print(f"cycles: {spp} spp at {scene.render.resolution_x}x{scene.render.resolution_y}, "

@@ -2,8 +2,9 @@
 # Throughput of Geodesic on the bundled Cornell box (512x512, depth 5) for each tracing back
 # end, with every path traced to full depth and with Russian roulette. With --with-cycles,
 # Blender Cycles (CPU, 2 threads, no denoising, no adaptive sampling) renders the same scene in
-# the same run, in the same two modes, and the ratios are printed. --with-cycles installs
-# Debian's blender package if it is missing.
+# the same run, in the same two modes, and the ratios are printed; then the error per second
+# of both on a scene they describe identically (bench/error_per_second.sh). --with-cycles
+# installs Debian's blender package if it is missing.
 #   bash bench/run.sh [--with-cycles] [--spp N]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -41,4 +42,6 @@ if [ "$with_cycles" = 1 ]; then
   printf '%-28s %12.3f %12.3f\n' "cycles (CPU, 2 threads)" "$cycles_full" "$cycles_rr"
   awk -v a="$full" -v b="$rr" -v c="$cycles_full" -v d="$cycles_rr" \
     'BEGIN { printf "%-28s %11.2fx %11.2fx\n", "geodesic / cycles", a / c, b / d }'
+  echo
+  bash bench/error_per_second.sh
 fi
