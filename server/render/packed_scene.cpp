@@ -129,8 +129,8 @@ void pack_cell_tubes(const Scene& scene, const Cell& cell, GpuCell& packed, Pack
   out.tubes.insert(out.tubes.end(), tubes.begin(), tubes.end());
 }
 
-// A cell's triangles (from `first`) and its sphere refs (from `first_ref`) in median-split
-// order of their chart boxes' centres (render/spatial_order.h). Triangle vertices are not shared, so
+// A cell's triangles (from `first`) and its sphere refs (from `first_ref`) in the index-split
+// order of their chart boxes (render/spatial_order.h). Triangle vertices are not shared, so
 // positions and normals move with their triangle and the indices stay 0, 1, 2, ...
 void order_spatially(uint32_t first, uint32_t first_ref, PackedScene& out) {
   const auto permute = [](auto& items, size_t begin, size_t stride,
@@ -140,25 +140,26 @@ void order_spatially(uint32_t first, uint32_t first_ref, PackedScene& out) {
       for (size_t i = 0; i < stride; ++i)
         items[begin + k * stride + i] = range[order[k] * stride + i];
   };
-  std::vector<Vec3> centres;
+  std::vector<PrimitiveBox> boxes;
   for (size_t t = first; t < out.triangles.size(); ++t) {
-    Vec3 c{};
+    PrimitiveBox box{Vec3{INFINITY, INFINITY, INFINITY}, Vec3{-INFINITY, -INFINITY, -INFINITY}};
     for (int i = 0; i < 3; ++i) {
       const Float4& x = out.positions[3 * t + i];
-      c += Vec3{x[0], x[1], x[2]} / 3.0;
+      box.lo = {std::min(box.lo.x, double(x[0])), std::min(box.lo.y, double(x[1])), std::min(box.lo.z, double(x[2]))};
+      box.hi = {std::max(box.hi.x, double(x[0])), std::max(box.hi.y, double(x[1])), std::max(box.hi.z, double(x[2]))};
     }
-    centres.push_back(c);
+    boxes.push_back(box);
   }
-  std::vector<uint32_t> order = median_split_order(centres);
+  std::vector<uint32_t> order = index_split_order(boxes);
   permute(out.triangles, first, 1, order);
   permute(out.positions, 3 * size_t(first), 3, order);
   permute(out.normals, 3 * size_t(first), 3, order);
-  centres.clear();
+  boxes.clear();
   for (size_t r = first_ref; r < out.sphere_bounds.size(); ++r) {
     const GpuAabb& b = out.sphere_bounds[r];
-    centres.push_back(Vec3{b.min[0] + b.max[0], b.min[1] + b.max[1], b.min[2] + b.max[2]} / 2.0);
+    boxes.push_back({Vec3{b.min[0], b.min[1], b.min[2]}, Vec3{b.max[0], b.max[1], b.max[2]}});
   }
-  order = median_split_order(centres);
+  order = index_split_order(boxes);
   permute(out.sphere_refs, first_ref, 1, order);
   permute(out.sphere_bounds, first_ref, 1, order);
 }
