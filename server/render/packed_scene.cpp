@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "render/chart_bounds.h"
-#include "render/spatial_order.h"
 #include "render/tube_culling.h"
 
 namespace geodesic {
@@ -140,16 +139,7 @@ void order_spatially(uint32_t first, uint32_t first_ref, PackedScene& out) {
       for (size_t i = 0; i < stride; ++i)
         items[begin + k * stride + i] = range[order[k] * stride + i];
   };
-  std::vector<PrimitiveBox> boxes;
-  for (size_t t = first; t < out.triangles.size(); ++t) {
-    PrimitiveBox box{Vec3{INFINITY, INFINITY, INFINITY}, Vec3{-INFINITY, -INFINITY, -INFINITY}};
-    for (int i = 0; i < 3; ++i) {
-      const Float4& x = out.positions[3 * t + i];
-      box.lo = {std::min(box.lo.x, double(x[0])), std::min(box.lo.y, double(x[1])), std::min(box.lo.z, double(x[2]))};
-      box.hi = {std::max(box.hi.x, double(x[0])), std::max(box.hi.y, double(x[1])), std::max(box.hi.z, double(x[2]))};
-    }
-    boxes.push_back(box);
-  }
+  std::vector<PrimitiveBox> boxes = triangle_boxes(out, first);
   std::vector<uint32_t> order = index_split_order(boxes);
   permute(out.triangles, first, 1, order);
   permute(out.positions, 3 * size_t(first), 3, order);
@@ -165,6 +155,20 @@ void order_spatially(uint32_t first, uint32_t first_ref, PackedScene& out) {
 }
 
 }  // namespace
+
+std::vector<PrimitiveBox> triangle_boxes(const PackedScene& packed, size_t first) {
+  std::vector<PrimitiveBox> boxes;
+  for (size_t t = first; t < packed.triangles.size(); ++t) {
+    PrimitiveBox box{Vec3{INFINITY, INFINITY, INFINITY}, Vec3{-INFINITY, -INFINITY, -INFINITY}};
+    for (int i = 0; i < 3; ++i) {
+      const Float4& x = packed.positions[3 * t + i];
+      box.lo = {std::min(box.lo.x, double(x[0])), std::min(box.lo.y, double(x[1])), std::min(box.lo.z, double(x[2]))};
+      box.hi = {std::max(box.hi.x, double(x[0])), std::max(box.hi.y, double(x[1])), std::max(box.hi.z, double(x[2]))};
+    }
+    boxes.push_back(box);
+  }
+  return boxes;
+}
 
 PackedScene pack_scene(const Scene& scene) {
   const GeometryKind k = scene.geometry;

@@ -11,6 +11,7 @@
 
 #include "render/cells.h"
 #include "render/emitters.h"
+#include "render/spatial_order.h"
 #include "scene/scene.h"
 
 namespace geodesic {
@@ -120,5 +121,9 @@ struct PackedScene {
 };
 
 PackedScene pack_scene(const Scene& scene);
+
+// The chart boxes of the packed triangles from `first` on, which packing orders them by
+// (render/spatial_order.h).
+std::vector<PrimitiveBox> triangle_boxes(const PackedScene& packed, size_t first = 0);
 
 }  // namespace geodesic

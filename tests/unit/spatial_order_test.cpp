@@ -85,17 +85,7 @@ TEST(SpatialOrder, ShrinksTheBoxesOfAnIndexHalvingTree) {
 // two triangles together.
 TEST(SpatialOrder, KeepsTheCornellBoxWallsTogether) {
   const Scene scene = load_scene_file(GEODESIC_SOURCE_DIR "/scenes/cornell-box.json");
-  const PackedScene packed = pack_scene(scene);
-  std::vector<PrimitiveBox> boxes;
-  for (size_t t = 0; t < packed.triangles.size(); ++t) {
-    PrimitiveBox b{Vec3{INFINITY, INFINITY, INFINITY}, Vec3{-INFINITY, -INFINITY, -INFINITY}};
-    for (int i = 0; i < 3; ++i) {
-      const auto& x = packed.positions[3 * t + i];
-      b.lo = {std::min(b.lo.x, double(x[0])), std::min(b.lo.y, double(x[1])), std::min(b.lo.z, double(x[2]))};
-      b.hi = {std::max(b.hi.x, double(x[0])), std::max(b.hi.y, double(x[1])), std::max(b.hi.z, double(x[2]))};
-    }
-    boxes.push_back(b);
-  }
+  const std::vector<PrimitiveBox> boxes = triangle_boxes(pack_scene(scene));
   ASSERT_EQ(boxes.size(), 16u);
   // Packed in the chosen order already: ordering again changes nothing, and the pairs (0, 1),
   // (2, 3), ... are the two halves of one wall (equal boxes).
