@@ -181,7 +181,7 @@ int render_command(int argc, char** argv) {
   if (args.seed) scene.render.seed = *args.seed;
   if (args.camera) {
     // Checked as a scene's "pose" is: an isometry of the scene's space, within round-off.
-    const double error = model::isometry_error(scene.geometry, *args.camera);
+    const double error = model::relative_isometry_error(scene.geometry, *args.camera);
     if (!(error < 1e-6))
       throw std::invalid_argument("--camera: not an isometry of " + std::string(geometry_name(scene.geometry)) +
                                   " space (error " + std::to_string(error) + " > 1e-06)");

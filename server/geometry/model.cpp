@@ -6,6 +6,8 @@
 #include <numbers>
 #include <utility>
 
+#include "geometry/wide_isometry.h"
+
 namespace geodesic::model {
 namespace {
 
@@ -27,10 +29,6 @@ Vec4 tangent_part(GeometryKind k, const Vec4& p, const Vec4& v) {
 }
 
 Vec4 column(const Mat4& g, int c) { return {g.m[0][c], g.m[1][c], g.m[2][c], g.m[3][c]}; }
-
-void set_column(Mat4& g, int c, const Vec4& v) {
-  g.m[0][c] = v.x, g.m[1][c] = v.y, g.m[2][c] = v.z, g.m[3][c] = v.w;
-}
 
 // The smallest of t + 2 pi n (n integer) above t_min.
 double next_turn_after(double t, double t_min) {
@@ -238,19 +236,7 @@ Vec4 normalize_tangent(GeometryKind k, const Vec4& p, const Vec4& v) {
   return n2 > 0 ? u / std::sqrt(n2) : Vec4{};
 }
 
-Mat4 reorthonormalize(GeometryKind k, const Mat4& g) {
-  Mat4 r;
-  const Vec4 p = normalize_point(k, column(g, 3));
-  set_column(r, 3, p);
-  Vec4 frame[3];
-  for (int i = 0; i < 3; ++i) {
-    Vec4 u = column(g, i);
-    for (int j = 0; j < i; ++j) u = u - inner(k, u, frame[j]) * frame[j];
-    frame[i] = normalize_tangent(k, p, u);
-    set_column(r, i, frame[i]);
-  }
-  return r;
-}
+Mat4 reorthonormalize(GeometryKind k, const Mat4& g) { return WideIsometry(k, g).matrix(); }
 
 double isometry_error(GeometryKind k, const Mat4& g) {
   const bool affine = k == GeometryKind::Euclidean;
@@ -265,6 +251,13 @@ double isometry_error(GeometryKind k, const Mat4& g) {
   if (affine)
     for (int j = 0; j < 4; ++j) error = std::max(error, std::abs(g.m[3][j] - (j == 3 ? 1 : 0)));
   return error;
+}
+
+double relative_isometry_error(GeometryKind k, const Mat4& g) {
+  double size = 1;
+  for (const auto& row : g.m)
+    for (double x : row) size = std::max(size, std::abs(x));
+  return isometry_error(k, g) / (size * size);
 }
 
 Vec3 chart(GeometryKind /*k*/, const Vec4& p) { return p.xyz() / p.w; }

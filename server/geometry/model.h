@@ -97,10 +97,15 @@ Vec4 sphere_normal(GeometryKind k, const Vec4& c, const Vec4& q);
 // tangent space at p. Used after every isometry applied in floating point.
 Vec4 normalize_point(GeometryKind k, const Vec4& p);
 Vec4 normalize_tangent(GeometryKind k, const Vec4& p, const Vec4& v);
-// The isometry nearest g by Gram–Schmidt in the model's form, origin image (column 3) first.
+// The isometry nearest g by Gram–Schmidt in the model's form, origin image (column 3) first;
+// in H3 in binary128, so that a pose 20 out keeps its frame (geometry/wide_isometry.h).
 Mat4 reorthonormalize(GeometryKind k, const Mat4& g);
 // Largest entry of |g^T G g - G| (G the form; E3: of the linear part, plus |bottom row - e_w|).
 double isometry_error(GeometryKind k, const Mat4& g);
+// isometry_error over the square of g's largest entry (when above 1): what round-off leaves
+// of an isometry written in double is ~1e-16 of it however far it carries the origin, while
+// isometry_error grows as e^(2D) in H3 (a pose 20 out: ~10).
+double relative_isometry_error(GeometryKind k, const Mat4& g);
 
 // Chart (p.xyz / p.w) and its inverse onto the model's w > 0 part.
 Vec3 chart(GeometryKind k, const Vec4& p);

@@ -150,7 +150,7 @@ ValidatedJob validate_job(const Json& body, const RenderService& service) {
   if (present("camera")) {
     // Checked as a scene's "pose" is: an isometry of the scene's space, within round-off.
     const Mat4 camera = parse_camera(body["camera"]);
-    const double error = model::isometry_error(job.scene.geometry, camera);
+    const double error = model::relative_isometry_error(job.scene.geometry, camera);
     if (!(error < 1e-6))
       fail("camera", std::string("not an isometry of ") + geometry_name(job.scene.geometry) +
                          " space (error " + std::to_string(error) + " > 1e-06)");

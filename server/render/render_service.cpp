@@ -139,7 +139,7 @@ void RenderService::move_camera(SessionId id, const CameraMotion& motion) {
   Session& s = impl_->find(id);
   const Mat4 pose = apply_motion(s.scene.geometry, s.pose, motion);
   // The pose stays finite whatever the move: one that would not is refused, the pose kept.
-  if (!(model::isometry_error(s.scene.geometry, pose) < 1e-6))
+  if (!(model::relative_isometry_error(s.scene.geometry, pose) < 1e-6))
     throw std::invalid_argument("move: the camera would leave the space's model (a step too long)");
   s.pose = pose;
   s.last_move = Impl::Clock::now();

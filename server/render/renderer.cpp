@@ -26,12 +26,9 @@ Renderer::Renderer(VulkanContext& ctx, const Scene& scene, BackendKind backend,
       geometry_(scene.geometry),
       cells_(build_cells(scene)),
       camera_relative_(without_quotient(geometry_, cells_)),
-      frame_(camera_relative_ ? model::reorthonormalize(geometry_, scene.camera.pose)
-                              : Mat4::identity()),
-      resources_(ctx,
-                 camera_relative_ ? moved_scene(scene, model::inverse_isometry(geometry_, frame_))
-                                  : scene,
-                 variant),
+      into_frame_(camera_relative_ ? WideIsometry(geometry_, scene.camera.pose).inverse()
+                                   : WideIsometry(geometry_, Mat4::identity())),
+      resources_(ctx, camera_relative_ ? moved_scene(scene, into_frame_) : scene, variant),
       backend_(make_backend(backend, ctx, resources_)) {}
 
 void Renderer::add_samples(uint32_t samples) {
@@ -59,16 +56,15 @@ Mat4 Renderer::set_view(const Mat4& camera_pose, int width, int height) {
     samples_ = 0;
     return placed.pose;
   }
-  const Mat4 local = model::inverse_isometry(geometry_, frame_) * camera_pose;
-  resources_.set_view(model::reorthonormalize(geometry_, local), 0, uint32_t(width), uint32_t(height));
+  resources_.set_view(into_frame_.apply(camera_pose), 0, uint32_t(width), uint32_t(height));
   samples_ = 0;
   return model::reorthonormalize(geometry_, camera_pose);
 }
 
 bool Renderer::frame_outgrown(const Mat4& camera_pose) const {
   if (!camera_relative_) return false;
-  const Vec4 from = frame_ * model::origin(), to = camera_pose * model::origin();
-  return model::geodesic_distance(geometry_, from, to) > frame_reach(geometry_);
+  const Vec4 seen = into_frame_.apply(camera_pose * model::origin());
+  return model::geodesic_distance(geometry_, model::origin(), seen) > frame_reach(geometry_);
 }
 
 void Renderer::set_max_depth(int max_depth) {

@@ -7,6 +7,7 @@
 #include <span>
 #include <vector>
 
+#include "geometry/wide_isometry.h"
 #include "render/cells.h"
 #include "render/image.h"
 #include "render/scene_resources.h"
@@ -44,9 +45,9 @@ class Renderer {
   // than the scene's; starts over. Returns the pose as placed.
   Mat4 set_view(const Mat4& camera_pose, int width, int height);
   // In a space without a quotient (E3, H3: one chart without faces) the renderer works in a
-  // frame centred on the camera it was built for: the scene is moved by the frame's inverse in
-  // double before anything is stored in float, so an image does not depend on where the whole
-  // scene sits (docs/numerics.md). Poses in and out are the scene's. True when `camera_pose`
+  // frame centred on the camera it was built for: the scene is moved by the frame's inverse
+  // (in binary128 in H3: scene/scene_isometry.h) before anything is stored in float, so an
+  // image does not depend on where the whole scene sits (docs/numerics.md). Poses in and out are the scene's. True when `camera_pose`
   // has strayed so far from the frame's centre that a renderer built there should replace
   // this one (a walking camera: render/render_service.h).
   bool frame_outgrown(const Mat4& camera_pose) const;
@@ -78,7 +79,9 @@ class Renderer {
   GeometryKind geometry_;
   std::vector<Cell> cells_;
   bool camera_relative_;
-  Mat4 frame_;  // the scene's coordinates of the frame the device works in
+  // From the scene's coordinates to those of the frame the device works in (the identity in a
+  // quotient).
+  WideIsometry into_frame_;
   SceneResources resources_;
   std::unique_ptr<TraceBackend> backend_;
   uint32_t samples_ = 0;

@@ -13,6 +13,7 @@
 #include "scene/json_path.h"
 #include "scene/manifold_loader.h"
 #include "scene/render_settings_loader.h"
+#include "scene/scene_isometry.h"
 #include "scene/mesh_loader.h"
 
 namespace geodesic {
@@ -87,7 +88,7 @@ Camera read_camera(const JsonNode& node, GeometryKind kind) {
     for (const char* other : {"position", "look_at", "up", "rotation"})
       if (node.find(other)) node.fail(std::string("give either \"pose\" or \"") + other + "\", not both");
     camera.pose = read_matrix(*pose);
-    const double error = model::isometry_error(kind, camera.pose);
+    const double error = model::relative_isometry_error(kind, camera.pose);
     if (!(error < 1e-6))
       pose->fail(std::string("not an isometry of ") + geometry_name(kind) + " space (error " +
                  std::to_string(error) + " > 1e-06)");
@@ -406,12 +407,26 @@ void check_inside_domain(const JsonNode& objects, const Scene& scene,
   }
 }
 
+// The document's content written about a frame of its own, moved to where the frame lies:
+// every position and the camera (scene/scene_isometry.h, precise 20 units out in H3).
+Scene placed(const JsonNode& node, Scene scene) {
+  node.expect_object({"position", "rotation"});
+  if (!scene.manifold.faces.empty())
+    node.fail("only in a space without a quotient (a quotient's content lies in its domain)");
+  const GeometryKind k = scene.geometry;
+  const auto rotation = node.find("rotation");
+  const Mat4 g = model::translation(k, read_vec3(node.at("position"))) *
+                 (rotation ? read_rotation(*rotation) : Mat4::identity());
+  return moved_scene(std::move(scene), g);
+}
+
 }  // namespace
 
 Scene parse_scene(const Json& doc, const DocumentFiles& files) {
   const JsonNode root(doc, "");
   root.expect_object(
-      {"name", "geometry", "manifold", "camera", "materials", "objects", "lights", "render"});
+      {"name", "geometry", "manifold", "placement", "camera", "materials", "objects", "lights",
+       "render"});
   Scene scene;
   if (const auto name = root.find("name")) scene.name = read_string(*name);
   scene.geometry = read_geometry(root.at("geometry"));
@@ -439,6 +454,7 @@ Scene parse_scene(const Json& doc, const DocumentFiles& files) {
     for (std::size_t i = 0; i < n; ++i) scene.lights.push_back(read_light((*lights)[i]));
   }
   if (const auto render = root.find("render")) scene.render = read_render(*render);
+  if (const auto placement = root.find("placement")) return placed(*placement, std::move(scene));
   return scene;
 }
 

@@ -1,7 +1,8 @@
 // Camera-relative numerics (render/renderer.h, docs/numerics.md): a scene moved far from the
 // origin by an isometry renders the image it renders at the origin, within the seed-to-seed
-// noise, with no non-finite sample: H3 up to 12 units out (the float-only renderer had
-// fireflies from 4 and NaN at 8), E3 with its contact shadow 1e6 out.
+// noise, with no non-finite sample: H3 up to 20 units out (the float-only renderer had
+// fireflies from 4 and NaN at 8; composing the frame in double lost the scene from 12), E3 with
+// its contact shadow 1e6 out.
 #include <string>
 
 #include "render/render_service.h"
@@ -13,8 +14,8 @@ namespace {
 
 // A ball 0.02 above a ground quad (a contact shadow), lit by a sphere light, a quad light and a
 // point light, all within 1.5 of the ball; seen from 1.7 away.
-Scene lit_ball(const std::string& geometry, uint64_t seed) {
-  Scene scene = scene_from_json(R"({"geometry": ")" + geometry + R"(",
+Scene lit_ball(const std::string& geometry, uint64_t seed, const std::string& placement = "") {
+  Scene scene = scene_from_json(R"({"geometry": ")" + geometry + R"(", )" + placement + R"(
     "camera": {"position": [0, 0.7, 1.5], "look_at": [0, -0.3, 0], "fov_y": 50},
     "materials": {"ground": {"diffuse": 0.6}, "ball": {"diffuse": [0.7, 0.5, 0.3]},
                   "lamp": {"emission": 10}, "panel": {"emission": 4}},
@@ -84,11 +85,34 @@ INSTANTIATE_TEST_SUITE_P(FarFromTheOrigin, CameraRelative,
                          ::testing::Values(Case{"hyperbolic", {4, 0, 0}, kH3Shadow, kH3Lit},
                                            Case{"hyperbolic", {0, 5.6, -5.6}, kH3Shadow, kH3Lit},
                                            Case{"hyperbolic", {-7, 7, 7}, kH3Shadow, kH3Lit},
+                                           Case{"hyperbolic", {0, 0, 16}, kH3Shadow, kH3Lit},
+                                           Case{"hyperbolic", {-11.5, 11.5, 11.5}, kH3Shadow, kH3Lit},
                                            Case{"euclidean", {1e4, 0, 0}, kE3Shadow, kE3Lit},
                                            Case{"euclidean", {1e6, -1e6, 1e6}, kE3Shadow, kE3Lit}),
                          [](const auto& info) {
                            return info.param.geometry + std::to_string(info.index);
                          });
+
+// The same ball written about its own frame, placed by the document 19.8 units out (the camera
+// 20.9; scene-format.md, "Placement"): the loader moves it there and the renderer back, each in
+// binary128, and the image is the one at the origin.
+TEST(Placement, ASceneTwentyUnitsOutRendersItsImageAtTheOrigin) {
+  const std::string placement =
+      R"("placement": {"position": [3, -12, 15.5], "rotation": {"yaw": 40, "pitch": -20}},)";
+  const Scene placed = lit_ball("hyperbolic", 1, placement);
+  const double out = length(model::log_origin(GeometryKind::Hyperbolic,
+                                              placed.camera.pose * model::origin()));
+  EXPECT_GT(out, 20);
+  const Rendered here = render_counted(lit_ball("hyperbolic", 1));
+  const Rendered other_seed = render_counted(lit_ball("hyperbolic", 2));
+  const Rendered far = render_counted(placed);
+  EXPECT_EQ(far.non_finite, 0u);
+  const double difference = rms_difference(far.image, here.image);
+  const double noise = rms_difference(other_seed.image, here.image);
+  std::printf("placed %.2f out: rms difference %.2e, seed-to-seed noise %.2e\n", out, difference,
+              noise);
+  EXPECT_LT(difference, 0.01 * noise);
+}
 
 }  // namespace
 }  // namespace geodesic::test

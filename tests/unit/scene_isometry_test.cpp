@@ -1,5 +1,6 @@
 // moved_scene (scene/scene_isometry.h): a scene moved by an isometry keeps every distance and
-// every angle its camera sees, and moving it back gives the scene again, in E3, H3 and S3.
+// every angle its camera sees, and moving it back gives the scene again, in E3, H3 and S3; in H3
+// 20 units out, seen from its own camera as the renderer sees it (geometry/wide_isometry.h).
 #include <gtest/gtest.h>
 
 #include "scene/scene_isometry.h"
@@ -78,6 +79,49 @@ INSTANTIATE_TEST_SUITE_P(Geometries, MovedScene,
                                            Case{GeometryKind::Hyperbolic, 0.5},
                                            Case{GeometryKind::Hyperbolic, 6},
                                            Case{GeometryKind::Spherical, 2.5}));
+
+// The scene seen from its camera, as the renderer moves it (render/renderer.cpp): exponential
+// coordinates of every point in the camera's frame.
+std::vector<Vec3> seen_from_camera(const Scene& scene) {
+  const Scene seen = moved_scene(scene, WideIsometry(scene.geometry, scene.camera.pose).inverse());
+  std::vector<Vec3> out;
+  for (const Vec4& p : points(seen)) out.push_back(model::log_origin(scene.geometry, p));
+  return out;
+}
+
+class FarOut : public ::testing::TestWithParam<double> {};
+
+// H3 D out: the scene's coordinates are ~e^D / 2 and rounded to double there, and composing in
+// double would cancel products of e^(2D). Seen from its camera, every point is where it was
+// within 1e-7 (float resolves 6e-8), up to D = 20 (e^40 = 2.4e17).
+TEST_P(FarOut, TheCameraSeesTheSceneItSawAtTheOrigin) {
+  const double distance = GetParam();
+  const GeometryKind k = GeometryKind::Hyperbolic;
+  const Scene scene = sample_scene(k);
+  const Mat4 g = model::translation(k, distance * normalize(Vec3{1, -2, 0.5})) *
+                 model::rotation({0.3, 1, -0.2}, 1.1);
+  const Scene moved = moved_scene(scene, g);
+  const Vec4 camera = moved.camera.pose * model::origin();
+  EXPECT_GT(length(model::log_origin(k, camera)), distance - 1.5);  // it did go far out
+  EXPECT_LT(model::relative_isometry_error(k, moved.camera.pose), 1e-14);
+
+  const std::vector<Vec3> before = seen_from_camera(scene), after = seen_from_camera(moved);
+  double worst = 0;
+  for (size_t i = 0; i < before.size(); ++i) worst = std::max(worst, length(after[i] - before[i]));
+  EXPECT_LT(worst, 1e-7) << "moved " << distance;
+
+  // The regime is hard: in double, the camera's inverse times a point loses them (from D ~ 12).
+  const Mat4 view = model::inverse_isometry(k, moved.camera.pose);
+  double naive = 0;
+  const std::vector<Vec4> far = points(moved);
+  for (size_t i = 1; i < far.size(); ++i)
+    naive = std::max(naive, length(model::log_origin(k, model::normalize_point(k, view * far[i])) -
+                                   before[i]));
+  std::printf("moved %g: worst %.1e in binary128, %.1e in double\n", distance, worst, naive);
+  if (distance >= 16) EXPECT_GT(naive, 1e-3);
+}
+
+INSTANTIATE_TEST_SUITE_P(Hyperbolic, FarOut, ::testing::Values(8.0, 12.0, 16.0, 20.0));
 
 }  // namespace
 }  // namespace geodesic::test

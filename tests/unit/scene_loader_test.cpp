@@ -388,5 +388,53 @@ TEST(SceneLoader, CameraMayBeGivenAsAnIsometryMatrix) {
   }
 }
 
+// A pose 20 units out, as the daemon reports one there: its entries are ~2.4e8 and rounded to
+// 17 digits, so g^T J g - J is off by ~10 in absolute terms; relative to its size it is an
+// isometry, and it reads back with its point 20 out and its frame orthonormal.
+TEST(SceneLoader, APoseTwentyUnitsOutIsAnIsometry) {
+  const GeometryKind k = GeometryKind::Hyperbolic;
+  const Mat4 g = model::translation(k, {0, 12, 16}) * model::rotation({1, 0.5, 0}, 0.7);
+  std::string rows = "[";
+  char number[40];
+  for (int r = 0; r < 4; ++r) {
+    rows += r ? ", [" : "[";
+    for (int c = 0; c < 4; ++c) {
+      std::snprintf(number, sizeof number, "%.17g", g.m[r][c]);
+      rows += (c ? ", " : "") + std::string(number);
+    }
+    rows += "]";
+  }
+  rows += "]";
+  const Scene scene = parse_scene(
+      nlohmann::ordered_json::parse(R"({"geometry": "hyperbolic", "camera": {"pose": )" + rows + "}}"),
+      fs::path("."));
+  EXPECT_NEAR(length(model::log_origin(k, scene.camera.pose * model::origin())), 20, 1e-9);
+  EXPECT_LT(model::relative_isometry_error(k, scene.camera.pose), 1e-15);
+}
+
+// Placement moves the content and the camera; a quotient refuses it, naming the field.
+TEST(SceneLoader, PlacementMovesEverythingButNotAQuotient) {
+  const auto doc = [](const std::string& manifold) {
+    return nlohmann::ordered_json::parse(R"({"geometry": "euclidean", )" + manifold + R"(
+      "placement": {"position": [100, 0, 0], "rotation": {"yaw": 90}},
+      "camera": {"position": [0, 0, 0.5], "look_at": [0, 0, 0]},
+      "materials": {"m": {"diffuse": 0.5}},
+      "objects": [{"type": "sphere", "material": "m", "center": [0.1, 0, 0], "radius": 0.1}],
+      "lights": [{"type": "point", "position": [0, 0.3, 0], "intensity": 1}]})");
+  };
+  const Scene scene = parse_scene(doc(""), fs::path("."));
+  // yaw 90 turns +x to -z: the sphere at (0.1, 0, 0) goes to (100, 0, -0.1).
+  EXPECT_NEAR(length(scene.spheres[0].center - Vec3{100, 0, -0.1}), 0, 1e-12);
+  EXPECT_NEAR(length(scene.lights[0].position - Vec3{100, 0.3, 0}), 0, 1e-12);
+  EXPECT_NEAR(length((scene.camera.pose * model::origin()).xyz() - Vec3{100.5, 0, 0}), 0, 1e-12);
+  try {
+    parse_scene(doc(R"("manifold": {"type": "torus", "size": 2},)"), fs::path("."));
+    FAIL() << "no error";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("placement: only in a space without a quotient", 0), 0u)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace geodesic
