@@ -18,8 +18,7 @@
 #include "render/pipeline_cache.h"
 #include "render/renderer.h"
 #include "render/shader_dump.h"
-#include "scene/default_scene.h"
-#include "scene/scene_loader.h"
+#include "scene/scene_source.h"
 
 namespace geodesic {
 namespace {
@@ -172,9 +171,11 @@ int render_command(int argc, char** argv) {
   const BackendKind backend = parse_backend(args.backend);
   if (!args.output.empty()) check_output_format(args.output);
   // A generator file gets the default scene inside its Dirichlet domain.
-  Scene scene = !args.generators.empty() ? parse_scene(generator_file_scene(args.generators), {})
-                : args.scene_dir.empty()  ? load_scene_file(args.scene)
-                                          : load_scene_file(args.scene, DocumentFiles(args.scene_dir, true));
+  const SceneSource source =
+      !args.generators.empty() ? SceneSource::generator_file(args.generators)
+      : args.scene_dir.empty() ? SceneSource::document_file(args.scene)
+                               : SceneSource::document_file(args.scene, DocumentFiles(args.scene_dir, true));
+  Scene scene = resolve_scene(source, {}).scene;
   if (args.width) scene.render.width = *args.width;
   if (args.height) scene.render.height = *args.height;
   if (args.max_depth) scene.render.max_depth = *args.max_depth;

@@ -4,8 +4,8 @@
 #include <cmath>
 #include <set>
 
-#include "scene/default_scene.h"
 #include "scene/render_settings_loader.h"
+#include "scene/scene_source.h"
 
 namespace geodesic::jobs {
 namespace {
@@ -36,18 +36,30 @@ double number_in(const Json& body, const char* field, double lo, double hi) {
   return v.get<double>();
 }
 
-// Scene errors name a path inside the document; the job's field is that path under "scene".
-Scene resolve_scene(const Json& scene, const RenderService& service) {
+// The body's scene as a source: a bundled name, an inline document, or generator text.
+SceneSource scene_source(const Json& body) {
+  if (body.contains("generators")) {
+    if (!body["generators"].is_string()) fail("generators", "must be the text of a generator file");
+    return SceneSource::generator_text(body["generators"].get<std::string>());
+  }
+  const Json& scene = body["scene"];
+  if (scene.is_string()) return SceneSource::bundled(scene.get<std::string>());
+  if (scene.is_object()) return SceneSource::inline_document(scene);
+  fail("scene", "must be a bundled scene name or a scene document");
+}
+
+// Bundled names and generator text are errors of their field already ("scene: unknown bundled
+// scene ...", "generators: matrix <i> (line <l>): reason"); a document's name a path inside it,
+// which is that path under "scene".
+ResolvedScene resolve_source(const SceneSource& source, const RenderService& service) {
   try {
-    if (scene.is_string()) return service.load_bundled_scene(scene.get<std::string>());
-    if (scene.is_object()) return service.parse_scene_document(scene);
+    return service.resolve(source);
   } catch (const SceneError& e) {
     const std::string message = e.what();
-    if (scene.is_string() || message.starts_with("scene:")) throw RequestError(message);
+    if (source.kind != SceneSource::Kind::Document) throw RequestError(message);
     if (message.starts_with("(root)")) throw RequestError("scene" + message.substr(6));
     throw RequestError("scene." + message);
   }
-  fail("scene", "must be a bundled scene name or a scene document");
 }
 
 Mat4 parse_camera(const Json& camera) {
@@ -118,20 +130,12 @@ ValidatedJob validate_job(const Json& body, const RenderService& service) {
          "give exactly one of scene and generators");
 
   const ServiceLimits& limits = service.limits();
+  ResolvedScene resolved = resolve_source(scene_source(body), service);
+  ValidatedJob job{JobRequest{}, std::move(resolved.scene)};
+  JobRequest& r = job.request;
   // Generator text becomes the default scene of its space (as a WebSocket `open` makes it),
   // stored as that document: a restarted daemon reads it as any other.
-  Json scene = body.contains("scene") ? body["scene"] : Json();
-  if (body.contains("generators")) {
-    if (!body["generators"].is_string()) fail("generators", "must be the text of a generator file");
-    try {
-      scene = generator_text_scene(body["generators"].get<std::string>(), "generators");
-    } catch (const SceneError& e) {
-      throw RequestError(e.what());  // "generators: matrix <i> (line <l>): reason"
-    }
-  }
-  ValidatedJob job{JobRequest{}, resolve_scene(scene, service)};
-  JobRequest& r = job.request;
-  r.scene = scene;
+  r.scene = body.contains("generators") ? std::move(resolved.generated) : body["scene"];
   auto present = [&](const char* field) { return body.contains(field) && !body[field].is_null(); };
   r.width = present("width") ? integer_in(body, "width", 16, limits.max_width)
                              : job.scene.render.width;

@@ -116,6 +116,12 @@ std::string without_exception_id(const std::string& what) {
 
 }  // namespace
 
+SceneSource OpenRequest::source() const {
+  if (scene) return SceneSource::bundled(*scene);
+  if (generators) return SceneSource::generator_text(*generators);
+  return SceneSource::inline_document(*document);  // parse_open gives one of the three
+}
+
 ClientMessage parse_client_message(std::string_view text, const ServiceLimits& limits) {
   Json message;
   try {

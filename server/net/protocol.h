@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "render/render_service.h"
+#include "scene/scene_source.h"
 
 namespace geodesic::net {
 
@@ -25,6 +26,8 @@ struct OpenRequest {
   std::optional<std::string> scene;
   std::optional<nlohmann::ordered_json> document;
   std::optional<std::string> generators;
+
+  SceneSource source() const;  // what the render service resolves
 };
 
 using ClientMessage = std::variant<OpenRequest, CameraMotion, SessionSettings>;

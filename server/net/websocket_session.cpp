@@ -7,8 +7,8 @@
 
 #include "net/preparation_pool.h"
 #include "net/protocol.h"
-#include "scene/default_scene.h"
 #include "scene/scene.h"
+#include "scene/scene_source.h"
 
 namespace geodesic::net {
 namespace {
@@ -100,7 +100,7 @@ void WebSocketSession::on_accept(beast::error_code ec) {
     auto first = std::make_shared<PreparedScene>();
     std::string failure;
     try {
-      *first = self->context_.render.prepare_bundled_scene("cornell-box");
+      *first = self->context_.render.prepare_scene(SceneSource::bundled(kDefaultSceneName));
     } catch (const std::exception& e) {
       failure = e.what();
     }
@@ -204,11 +204,7 @@ void WebSocketSession::handle_message(const std::string& text) {
                                  (motion && render.move_outgrows_frame(*id_, *motion))))
       return prepare(std::move(message));
     if (open) {
-      send_text(scene_message(
-          open->scene        ? render.load_scene(*id_, *open->scene)
-          : open->generators ? render.load_scene_document(
-                                   *id_, generator_text_scene(*open->generators, "generators"))
-                             : render.load_scene_document(*id_, *open->document)));
+      send_text(scene_message(render.load_scene(*id_, open->source())));
     } else if (motion) {
       render.move_camera(*id_, *motion);
     } else {
@@ -241,13 +237,8 @@ void WebSocketSession::prepare(ClientMessage message) {
         prepared.scene = render.prepare_move(id, *motion);
       } else if (!open) {
         prepared.scene = render.prepare_settings(id, std::get<SessionSettings>(message));
-      } else if (open->scene) {
-        prepared.scene = render.prepare_bundled_scene(*open->scene);
       } else {
-        Scene scene = render.parse_scene_document(
-            open->generators ? generator_text_scene(*open->generators, "generators") : *open->document);
-        std::string name = scene.name.empty() ? "document" : scene.name;
-        prepared.scene = render.prepare_scene(std::move(scene), std::move(name));
+        prepared.scene = render.prepare_scene(open->source());
       }
     } catch (const SceneError& e) {
       prepared.error = error_message(service_error(e, open));

@@ -8,7 +8,6 @@
 #include "render/pipeline_cache.h"
 #include "render/render_service_impl.h"
 #include "scene/camera_motion.h"
-#include "scene/scene_loader.h"
 
 namespace geodesic {
 
@@ -30,16 +29,17 @@ void RenderService::use_pipeline_cache(const std::filesystem::path& dir) {
 }
 
 std::vector<std::string> RenderService::bundled_scenes() const {
-  std::vector<std::string> names;
-  for (const auto& entry : std::filesystem::directory_iterator(impl_->scene_dir))
-    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
-  std::sort(names.begin(), names.end());
-  return names;
+  return bundled_scene_names(impl_->scene_dir);
 }
 
 const ServiceLimits& RenderService::limits() const { return impl_->limits; }
 
-PreparedScene RenderService::prepare_scene(Scene scene, std::string name) const {
+ResolvedScene RenderService::resolve(const SceneSource& source) const {
+  return resolve_scene(source, impl_->scene_dir);
+}
+
+PreparedScene RenderService::prepare_scene(ResolvedScene resolved) const {
+  Scene& scene = resolved.scene;
   impl_->check_limits(scene);
   PreparedScene prepared;
   // A device lost during the build: build again on its replacement (a lost device keeps
@@ -51,12 +51,13 @@ PreparedScene RenderService::prepare_scene(Scene scene, std::string name) const 
       throw std::runtime_error("render: the server is stopping");
   }
   prepared.scene = std::move(scene);
-  prepared.name = std::move(name);
+  prepared.name = std::move(resolved.name);
+  prepared.kind = resolved.kind;
   return prepared;
 }
 
-PreparedScene RenderService::prepare_bundled_scene(const std::string& name) const {
-  return prepare_scene(load_bundled_scene(name), name);
+PreparedScene RenderService::prepare_scene(const SceneSource& source) const {
+  return prepare_scene(resolve(source));
 }
 
 RenderService::SessionId RenderService::open_session(PreparedScene&& scene, FrameCallback on_frame,
@@ -67,7 +68,7 @@ RenderService::SessionId RenderService::open_session(PreparedScene&& scene, Fram
                              " open)");
   if (!impl_->current(*scene.renderer)) {  // built on a device lost since
     lock.unlock();
-    scene = prepare_scene(std::move(scene.scene), std::move(scene.name));
+    scene = prepare_scene(ResolvedScene{std::move(scene.scene), scene.kind, std::move(scene.name), {}});
     return open_session(std::move(scene), std::move(on_frame), std::move(on_failure));
   }
   auto session = std::make_unique<Session>();
@@ -84,7 +85,7 @@ RenderService::SessionId RenderService::open_session(PreparedScene&& scene, Fram
 
 RenderService::SessionId RenderService::open_session(FrameCallback on_frame,
                                                      FailureCallback on_failure) {
-  return open_session(prepare_bundled_scene("cornell-box"), std::move(on_frame),
+  return open_session(prepare_scene(SceneSource::bundled(kDefaultSceneName)), std::move(on_frame),
                       std::move(on_failure));
 }
 
@@ -95,29 +96,16 @@ void RenderService::close_session(SessionId id) {
   impl_->publish();
 }
 
-Scene RenderService::load_bundled_scene(const std::string& name) const {
-  const auto names = bundled_scenes();
-  if (std::find(names.begin(), names.end(), name) == names.end())
-    throw SceneError("scene: unknown bundled scene \"" + name + "\"");
-  return load_scene_file(std::filesystem::path(impl_->scene_dir) / (name + ".json"));
-}
-
-Scene RenderService::parse_scene_document(const nlohmann::ordered_json& document) const {
-  return parse_scene(document, DocumentFiles(impl_->scene_dir, /*confined=*/true));
+SceneInfo RenderService::load_scene(SessionId id, const SceneSource& source) {
+  return install_scene(id, prepare_scene(source));
 }
 
 SceneInfo RenderService::load_scene(SessionId id, const std::string& name) {
-  return install_scene(id, load_bundled_scene(name), name);
+  return load_scene(id, SceneSource::bundled(name));
 }
 
 SceneInfo RenderService::load_scene_document(SessionId id, const nlohmann::ordered_json& doc) {
-  Scene scene = parse_scene_document(doc);
-  std::string name = scene.name.empty() ? "document" : scene.name;
-  return install_scene(id, std::move(scene), std::move(name));
-}
-
-SceneInfo RenderService::install_scene(SessionId id, Scene scene, std::string name) {
-  return install_scene(id, prepare_scene(std::move(scene), std::move(name)));
+  return load_scene(id, SceneSource::inline_document(doc));
 }
 
 SceneInfo RenderService::install_scene(SessionId id, PreparedScene&& scene) {
@@ -125,7 +113,8 @@ SceneInfo RenderService::install_scene(SessionId id, PreparedScene&& scene) {
   Session& s = impl_->find(id);
   if (!impl_->current(*scene.renderer)) {  // built on a device lost since
     lock.unlock();
-    return install_scene(id, std::move(scene.scene), std::move(scene.name));
+    return install_scene(id, prepare_scene(ResolvedScene{std::move(scene.scene), scene.kind,
+                                                         std::move(scene.name), {}}));
   }
   auto old = std::move(s.renderer);  // freed after the lock
   s.adopt(std::move(scene));
@@ -153,16 +142,14 @@ bool RenderService::move_outgrows_frame(SessionId id, const CameraMotion& motion
 }
 
 PreparedScene RenderService::prepare_move(SessionId id, const CameraMotion& motion) const {
-  Scene scene;
-  std::string name;
+  ResolvedScene resolved;
   {
     auto lock = impl_->lock();
     const Session& s = impl_->find(id);
-    scene = s.scene;
-    name = s.scene_name;
-    scene.camera.pose = apply_motion(s.scene.geometry, s.pose, motion);
+    resolved = {s.scene, s.scene_kind, s.scene_name, {}};
+    resolved.scene.camera.pose = apply_motion(s.scene.geometry, s.pose, motion);
   }
-  return prepare_scene(std::move(scene), std::move(name));
+  return prepare_scene(std::move(resolved));
 }
 
 void RenderService::rebase(SessionId id, PreparedScene&& prepared) {
@@ -205,21 +192,20 @@ std::optional<PreparedScene> RenderService::prepare_settings(SessionId id,
     throw std::invalid_argument("height: must be in [16, " + std::to_string(l.max_height) + "]");
   if (settings.max_depth != -1 && (settings.max_depth < 0 || settings.max_depth > l.max_depth))
     throw std::invalid_argument("max_depth: must be in [0, " + std::to_string(l.max_depth) + "]");
-  Scene scene;
-  std::string name;
+  ResolvedScene resolved;
   {
     auto lock = impl_->lock();
     Session& s = impl_->find(id);
     const int width = settings.width ? settings.width : s.width;
     const int height = settings.height ? settings.height : s.height;
     if (width <= s.scene.render.width && height <= s.scene.render.height) return std::nullopt;
-    scene = s.scene;  // the renderer is rebuilt at the new size, from the camera's pose
-    name = s.scene_name;
-    scene.render.width = std::max(s.scene.render.width, width);
-    scene.render.height = std::max(s.scene.render.height, height);
-    scene.camera.pose = s.pose;
+    // The renderer is rebuilt at the new size, from the camera's pose.
+    resolved = {s.scene, s.scene_kind, s.scene_name, {}};
+    resolved.scene.render.width = std::max(s.scene.render.width, width);
+    resolved.scene.render.height = std::max(s.scene.render.height, height);
+    resolved.scene.camera.pose = s.pose;
   }
-  return prepare_scene(std::move(scene), std::move(name));
+  return prepare_scene(std::move(resolved));
 }
 
 bool RenderService::run_background(const std::function<void(VulkanContext&)>& work) {

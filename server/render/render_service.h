@@ -18,6 +18,7 @@
 #include "geometry/vec.h"
 #include "scene/camera_motion.h"
 #include "scene/scene.h"
+#include "scene/scene_source.h"
 
 namespace geodesic {
 
@@ -42,10 +43,14 @@ struct EncodedFrame {
   std::vector<unsigned char> jpeg;
 };
 
+// What the protocol's `scene` message says of a session's scene: `name` as ResolvedScene has
+// it (the bundled name, the document's name or "document"), `source` how it was given
+// (source_kind_name), `title` the document's own name (its name when it has none).
 struct SceneInfo {
   std::string name, geometry, manifold;
   int width = 0, height = 0, max_depth = 0;
   Exposure exposure;
+  std::string source = source_kind_name(SceneSource::Kind::Bundled), title;
 };
 
 // Absent fields keep their value. A new exposure alone keeps the accumulation: the last frame
@@ -84,6 +89,7 @@ struct PreparedScene {
   PreparedScene& operator=(PreparedScene&&) noexcept;
   Scene scene;
   std::string name;
+  SceneSource::Kind kind = SceneSource::Kind::Bundled;
   std::unique_ptr<Renderer> renderer;
 };
 
@@ -111,34 +117,33 @@ class RenderService {
   std::vector<std::string> bundled_scenes() const;
   const ServiceLimits& limits() const;
 
-  // Builds `scene`'s renderer on the calling thread, beside the rendering (not under the device
-  // lock): the daemon calls it on its preparation pool, never on an I/O thread. Throws
-  // SceneError when the scene exceeds the server's limits.
-  PreparedScene prepare_scene(Scene scene, std::string name) const;
-  PreparedScene prepare_bundled_scene(const std::string& name) const;
+  // Resolves `source` (scene/scene_source.h) against this service's scene directory: bundled
+  // scenes are its files, and an inline document's file names must lie inside it. Throws
+  // SceneError ("<field>: <reason>").
+  ResolvedScene resolve(const SceneSource& source) const;
 
-  // Opens a session on `scene` (the client's first view: the daemon prepares "cornell-box");
+  // Builds the scene's renderer on the calling thread, beside the rendering (not under the
+  // device lock): the daemon calls it on its preparation pool, never on an I/O thread. Throws
+  // SceneError when the scene is bad or exceeds the server's limits.
+  PreparedScene prepare_scene(ResolvedScene scene) const;
+  PreparedScene prepare_scene(const SceneSource& source) const;
+
+  // Opens a session on `scene` (the client's first view: the daemon prepares
+  // kDefaultSceneName);
   // throws std::runtime_error when max_sessions are open, leaving `scene` as it was. A failed
   // render ends only its own session; after a device loss the service makes a new device and
   // the other sessions go on, their accumulation started over.
   SessionId open_session(PreparedScene&& scene, FrameCallback on_frame,
                          FailureCallback on_failure = nullptr);
-  // The same on "cornell-box", prepared on the calling thread.
+  // The same on kDefaultSceneName, prepared on the calling thread.
   SessionId open_session(FrameCallback on_frame, FailureCallback on_failure = nullptr);
   void close_session(SessionId id);
 
-  // A bundled scene by name, or an inline scene document (mesh paths relative to the scene
-  // directory), as `open` resolves them; throws SceneError ("<field>: <reason>").
-  Scene load_bundled_scene(const std::string& name) const;
-  Scene parse_scene_document(const nlohmann::ordered_json& document) const;
-
   // Each throws geodesic::SceneError / std::invalid_argument ("<field>: <reason>") on bad
-  // input, leaving the session as it was.
+  // input, leaving the session as it was. The scene's renderer is built on the calling thread.
+  SceneInfo load_scene(SessionId id, const SceneSource& source);
   SceneInfo load_scene(SessionId id, const std::string& bundled_name);
   SceneInfo load_scene_document(SessionId id, const nlohmann::ordered_json& document);
-  // A scene parsed beforehand (load_bundled_scene, parse_scene_document), shown as `name`; its
-  // renderer is built on the calling thread.
-  SceneInfo install_scene(SessionId id, Scene scene, std::string name);
   // A prepared scene: cheap (a renderer built on a device lost since is built again here).
   SceneInfo install_scene(SessionId id, PreparedScene&& scene);
   void move_camera(SessionId id, const CameraMotion& motion);

@@ -29,6 +29,7 @@ void RenderSession::adopt(PreparedScene prepared) {
   non_finite = truncated = scene_non_finite = scene_truncated = 0;
   scene = std::move(prepared.scene);
   scene_name = std::move(prepared.name);
+  scene_kind = prepared.kind;
   width = scene.render.width;
   height = scene.render.height;
   pose = scene.camera.pose;
@@ -117,7 +118,8 @@ void RenderSession::set_exposure(const Exposure& exposure) {
 
 SceneInfo RenderSession::info() const {
   return {scene_name, geometry_name(scene.geometry), scene.manifold.name, width, height,
-          scene.render.max_depth, scene.render.exposure};
+          scene.render.max_depth, scene.render.exposure, source_kind_name(scene_kind),
+          scene.name.empty() ? scene_name : scene.name};
 }
 
 }  // namespace geodesic

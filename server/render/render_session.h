@@ -21,6 +21,7 @@ struct RenderSession {
   RenderService::FailureCallback on_failure;
   Scene scene;
   std::string scene_name;
+  SceneSource::Kind scene_kind = SceneSource::Kind::Bundled;
   std::unique_ptr<Renderer> renderer;
   Mat4 pose;
   int width = 0, height = 0;  // the full resolution asked for
