@@ -34,7 +34,7 @@ const char* kUsage =
     "  devices       list Vulkan devices and whether each can ray-trace\n"
     "  serve [--host H] [--port P] [--device NAME|INDEX] [--web DIR] [--data DIR]\n"
     "        [--token T] [--max-jobs N] [--max-queue N] [--checkpoint-seconds S]\n"
-    "        [--max-sessions N] [--keep-jobs N] [--jobs-backend local|slurm]\n"
+    "        [--max-sessions N] [--max-depth N] [--keep-jobs N] [--jobs-backend local|slurm]\n"
     "        [--slurm-parts N] [--slurm-scripts DIR]\n"
     "                the render daemon: HTTP and WebSocket (docs/protocol.md), default\n"
     "                127.0.0.1:8080, until SIGINT or SIGTERM; --jobs-backend slurm hands\n"

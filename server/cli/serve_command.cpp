@@ -31,7 +31,7 @@ struct ServeOptions {
 
 constexpr const char* kFlags[] = {"--host", "--port", "--device", "--web", "--data", "--token",
                                   "--max-jobs", "--max-queue", "--checkpoint-seconds",
-                                  "--max-sessions", "--prepare-seconds", "--keep-jobs",
+                                  "--max-sessions", "--max-depth", "--prepare-seconds", "--keep-jobs",
                                   "--jobs-backend", "--slurm-parts", "--slurm-scripts"};
 
 // $XDG_DATA_HOME/geodesic, else ~/.local/share/geodesic (the XDG base directory default).
@@ -72,6 +72,7 @@ void apply(ServeOptions& options, const std::string& flag, const std::string& va
   else if (flag == "--checkpoint-seconds")
     options.jobs.checkpoint_seconds = double(integer(flag, value, 1, 86400));
   else if (flag == "--max-sessions") options.limits.max_sessions = int(integer(flag, value, 1, 1024));
+  else if (flag == "--max-depth") options.limits.max_depth = int(integer(flag, value, 0, 64));
   else if (flag == "--keep-jobs") options.jobs.keep_jobs = int(integer(flag, value, 0, 1000000));
   else if (flag == "--jobs-backend") {
     if (value != "local" && value != "slurm")

@@ -1,7 +1,7 @@
 // What an operator needs and what a careless client sends: finished jobs removed with their
 // files (`DELETE ?remove=true`, 409 while one runs), `--keep-jobs` retention, `GET /api/jobs`
 // pages, and the small refusals: invalid UTF-8 (400 JSON), cameras that are not isometries,
-// a lower-case bearer scheme, a blank token, `--host localhost`.
+// a lower-case bearer scheme, a blank token, `--host localhost`, `--max-depth`.
 #include <filesystem>
 #include <thread>
 
@@ -124,6 +124,24 @@ TEST(JobsOperator, CarelessInputGetsNamedRefusals) {
   json identity = small_job();
   identity["camera"] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
   EXPECT_EQ(api.post("/api/jobs", identity).status, 202u);
+}
+
+// `--max-depth` bounds a job's max_depth as it bounds a session's (hello.limits.max_depth):
+// 40 is past the default 16.
+TEST(JobsOperator, MaxDepthIsTheServersOwn) {
+  TempDir data;
+  DaemonProcess daemon(data.path() / "data", {"--max-depth", "40"});
+  const JobsApi api(daemon.port());
+  json deep = small_job();
+  deep["max_depth"] = 40;
+  EXPECT_EQ(api.post("/api/jobs", deep).status, 202u);
+  deep["max_depth"] = 41;
+  const ApiReply refused = api.post("/api/jobs", deep);
+  EXPECT_EQ(refused.status, 400u);
+  EXPECT_EQ(refused.json["error"], "max_depth: must be an integer in [0, 40]");
+  std::string output;
+  EXPECT_NE(run_cli({"serve", "--max-depth", "65", "--data", (data.path() / "b").string()}, output), 0);
+  EXPECT_NE(output.find("--max-depth: must be an integer in [0, 64]"), std::string::npos) << output;
 }
 
 TEST(JobsOperator, TokensAndHostsAreCheckedAsWritten) {
