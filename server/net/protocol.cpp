@@ -176,6 +176,8 @@ std::string hello_message(uint64_t session, const std::vector<std::string>& scen
 std::string scene_message(const SceneInfo& scene) {
   return dump(Json{{"type", "scene"},
                    {"name", scene.name},
+                   {"source", scene.source},
+                   {"title", scene.title},
                    {"geometry", scene.geometry},
                    {"manifold", scene.manifold},
                    {"width", scene.width},

@@ -29,7 +29,9 @@ rm -rf "$data"
 
 # From the repository root, so the daemon finds web/ and scenes/.
 cd "$repo"
-"$geodesic" serve --host 127.0.0.1 --port "$port" --data "$data" >"$log" 2>&1 &
+# --max-depth differs from the default (16), so the page can only know it from `hello`.
+max_depth=12
+"$geodesic" serve --host 127.0.0.1 --port "$port" --data "$data" --max-depth "$max_depth" >"$log" 2>&1 &
 daemon=$!
 stop_daemon() {
   if kill -0 "$daemon" 2>/dev/null; then
@@ -57,7 +59,7 @@ http_ok "$url/healthz" || { cat "$log" >&2; fail "no answer from $url/healthz af
 echo "web tests: daemon at $url (pid $daemon), log in $log"
 
 status=0
-GEODESIC_URL="$url" GEODESIC_PID="$daemon" SCREENSHOT_DIR="${SCREENSHOT_DIR:-$build/web-screenshots}" \
+GEODESIC_URL="$url" GEODESIC_PID="$daemon" GEODESIC_MAX_DEPTH="$max_depth" SCREENSHOT_DIR="${SCREENSHOT_DIR:-$build/web-screenshots}" \
   node --test --test-reporter=spec "$here/walkthrough.test.mjs" || status=$?
 if [ "$status" -ne 0 ]; then
   echo "web tests: failed; the daemon's log ($log) ends:" >&2

@@ -7,6 +7,7 @@
 // Run through tests/web/run.sh, which starts the daemon and sets:
 //   GEODESIC_URL    the daemon's http://host:port (required)
 //   GEODESIC_PID    its process id: the last test kills it to see the banner (skipped without)
+//   GEODESIC_MAX_DEPTH  the daemon's --max-depth (required): the page must take it from `hello`
 //   SCREENSHOT_DIR  where screenshots go (default build/web-screenshots/)
 //   CHROMIUM        the browser (default /usr/bin/chromium)
 
@@ -28,6 +29,8 @@ const START = '/?width=160&height=120&depth=2';
 const FRAME_TIMEOUT = 60_000;
 
 if (!BASE) throw new Error('GEODESIC_URL is not set: run tests/web/run.sh');
+const MAX_DEPTH = Number(process.env.GEODESIC_MAX_DEPTH);
+if (!Number.isInteger(MAX_DEPTH)) throw new Error('GEODESIC_MAX_DEPTH is not set: run tests/web/run.sh');
 
 let userDataDir;
 let context;
@@ -209,6 +212,27 @@ test('samples accumulate while the camera is still', async () => {
   assert.equal(frames.at(-1).truncated_geodesics, 0);
   assert.equal(await page.textContent('#stat-nonfinite'), '0');
   assert.equal(await page.textContent('#stat-truncated'), '0');
+});
+
+test('the server says what the scene is and bounds depth; the page uses both', async () => {
+  // hello carries the daemon's --max-depth, not the default 16.
+  const hello = receivedOfType('hello')[0];
+  assert.equal(hello.limits.max_depth, MAX_DEPTH);
+  assert.notEqual(MAX_DEPTH, 16, 'run.sh starts the daemon with a non-default --max-depth');
+  // The default scene is a bundled one, and says so; the picker shows it.
+  const scene = receivedOfType('scene')[0];
+  assert.equal(scene.source, 'bundled');
+  assert.equal(scene.name, 'cornell-box');
+  assert.match(scene.title, /^Cornell box/);
+  assert.equal(await page.inputValue('#scene-picker'), 'cornell-box');
+  assert.equal(await page.getAttribute('#scene-title', 'title'), scene.title);
+  // A depth past the server's limit is clamped to it, and the clamped depth is what is sent.
+  await page.fill('#depth', String(MAX_DEPTH + 20));
+  await page.press('#depth', 'Enter');
+  await waitFor(() => sentOfType('settings').some((m) => m.max_depth === MAX_DEPTH), `settings {max_depth: ${MAX_DEPTH}}`);
+  assert.equal(await page.inputValue('#depth'), String(MAX_DEPTH));
+  assert.ok(!sentOfType('settings').some((m) => m.max_depth > MAX_DEPTH), 'a depth over the limit was sent');
+  assert.ok(!receivedOfType('error').some((m) => m.field === 'max_depth'), 'the server refused a depth');
 });
 
 test('the depth control sends settings', async () => {
@@ -430,6 +454,7 @@ test('a .gen file picked on the page opens its space, W walks through it, and a 
   await waitForShownFrame(page, 2, (f) => f.scene === title && f.width === width && f.height === height);
   const scene = receivedOfType('scene').at(-1);
   assert.equal(scene.name, title);
+  assert.equal(scene.source, 'generators', 'the server says the scene came from generators');
   assert.equal(scene.geometry, 'spherical');
   assert.match(await page.textContent('#scene-title'), /Mirrored lens.* — spherical, generators/);
   assert.equal(await page.inputValue('#scene-picker'), '', 'the picker names no bundled scene');

@@ -56,12 +56,11 @@ const wanted = {
   exposure: exposureParam(params.get('exposure')), // stops, 'auto', or null
 };
 
-const limits = { max_width: 1920, max_height: 1080, max_depth: 16 }; // until `hello` gives the server's
+let limits = null;        // the server's (`hello`): nothing is sent or clamped before it comes
 let currentScene = null; // the last `scene` message
 let lastFrame = null;    // the last `frame` message (its camera goes into render jobs)
 let openPending = false; // an `open` sent and not yet answered by `scene` or `error`
 let openGenerators = null; // the generator text of the scene rendering now, if it came from one
-let bundled = new Set(); // the server's scene names: a scene by any other name came from generators
 let sceneJustChanged = false; // a `scene` message came and no frame since
 
 const viewer = new Viewer(ui.canvas);
@@ -154,10 +153,10 @@ function handleMessage(msg) {
         // A failed `open` leaves the old scene in place: stop asking for the new one (a
         // reconnect would ask again) and put the picker back to match.
         openPending = false;
-        wanted.scene = currentScene ? currentScene.name : null;
+        wanted.scene = currentScene?.source === 'bundled' ? currentScene.name : null;
         wanted.generators = openGenerators;
         if (currentScene) {
-          selectScene(currentScene.name);
+          selectScene(currentScene);
           applyWantedSettings(currentScene); // skipped while the open was pending
         }
       }
@@ -171,14 +170,14 @@ function handleMessage(msg) {
 function onHello(msg) {
   connection.resetBackoff();
   ui.status.textContent = msg.session !== undefined ? `connected · session ${msg.session}` : 'connected';
-  Object.assign(limits, msg.limits || {});
-  ui.width.max = String(limits.max_width);
-  ui.height.max = String(limits.max_height);
-  ui.depth.max = String(limits.max_depth);
+  limits = msg.limits;
+  for (const [input, max] of [[ui.width, limits.max_width], [ui.height, limits.max_height], [ui.depth, limits.max_depth]]) {
+    input.max = String(max);
+    input.disabled = false;
+  }
 
   const scenes = Array.isArray(msg.scenes) ? msg.scenes : [];
   ui.picker.replaceChildren(...scenes.map((name) => new Option(name, name)));
-  bundled = new Set(scenes);
   ui.picker.disabled = scenes.length === 0;
   viewer.reset(); // a new session numbers its frames afresh
   lastFrame = null;
@@ -205,15 +204,17 @@ function openSpace(text) {
 function onScene(msg) {
   currentScene = msg;
   sceneJustChanged = true;
-  const fromGenerators = !bundled.has(msg.name);
-  const isWanted = wanted.generators ? fromGenerators : msg.name === wanted.scene;
+  // The server says how the scene was given (`source`): bundled, a document, or generators.
+  const fromGenerators = msg.source === 'generators';
+  const isWanted = wanted.generators ? fromGenerators : msg.source === 'bundled' && msg.name === wanted.scene;
   if (isWanted) openPending = false;
   openGenerators = fromGenerators ? wanted.generators : null;
   stats.reset();
   clearErrors();
-  selectScene(msg.name);
+  selectScene(msg);
   const where = [msg.geometry, msg.manifold].filter((v) => v && v !== 'none').join(', ');
   ui.title.textContent = where ? `${msg.name} — ${where}` : msg.name;
+  ui.title.title = msg.title; // the document's own description
 
   // A fresh session's default scene, with our own `open` already on its way: its settings would
   // be replaced at once, so don't send any.
@@ -239,10 +240,10 @@ function applyWantedSettings(msg) {
   ui.depth.value = String(wanted.max_depth ?? msg.max_depth);
 }
 
-function selectScene(name) {
-  // `name` is a bundled name when the scene came from the picker; a space from generators is
-  // none of them, so the picker shows no choice (and picking any scene then changes it).
-  if ([...ui.picker.options].some((o) => o.value === name)) ui.picker.value = name;
+function selectScene(scene) {
+  // Only a bundled scene is one of the picker's; for a document or a space from generators the
+  // picker shows no choice (and picking any scene then changes it).
+  if (scene.source === 'bundled') ui.picker.value = scene.name;
   else ui.picker.selectedIndex = -1;
 }
 
@@ -326,6 +327,7 @@ function sendSettings(field, value) {
   wanted[field] = value;
   connection.send({ type: 'settings', [field]: value });
 }
+// The fields are disabled until `hello` brings the server's limits.
 ui.width.addEventListener('change', () => sendSettings('width', readInt(ui.width, 16, limits.max_width)));
 ui.height.addEventListener('change', () => sendSettings('height', readInt(ui.height, 16, limits.max_height)));
 ui.depth.addEventListener('change', () => sendSettings('max_depth', readInt(ui.depth, 0, limits.max_depth)));
