@@ -1,8 +1,8 @@
 // libFuzzer: any bytes as a client's WebSocket message and as raw HTTP request bytes, through
 // the daemon's handling that needs no device or socket.
-//   WebSocket: parse_client_message, then for `open` the scene it names (inline document or
-//   generator text, its files confined to the scene directory as on the daemon) and the error
-//   message the client would get. Contract: ProtocolError or SceneError, nothing else.
+//   WebSocket: parse_client_message, then for `open` the scene it names, resolved as the daemon
+//   resolves it (scene/scene_source.h: a bundled name, an inline document whose files are
+//   confined to the scene directory, generator text) and the error message the client would get. Contract: ProtocolError or SceneError, nothing else.
 //   HTTP: Beast's request parser with the daemon's body limit, then the token check and the
 //   static file lookup in web/. Contract: never a file from outside web/.
 #include <cstddef>
@@ -17,8 +17,7 @@
 #include "net/protocol.h"
 #include "net/server_context.h"
 #include "net/static_files.h"
-#include "scene/default_scene.h"
-#include "scene/scene_loader.h"
+#include "scene/scene_source.h"
 
 namespace geodesic::net {
 namespace {
@@ -33,11 +32,9 @@ void client_message(std::string_view text) {
     return;
   }
   const auto* open = std::get_if<OpenRequest>(&message);
-  if (!open || open->scene) return;  // bundled names and camera moves need the render service
+  if (!open) return;  // camera moves and settings need the render service
   try {
-    parse_scene(open->document ? *open->document
-                               : generator_text_scene(*open->generators, "generators"),
-                DocumentFiles(GEODESIC_SOURCE_DIR "/scenes", /*confined=*/true));
+    resolve_scene(open->source(), GEODESIC_SOURCE_DIR "/scenes");
   } catch (const SceneError& e) {
     error_message(service_error(e, open));
   }
