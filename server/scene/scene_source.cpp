@@ -47,6 +47,7 @@ SceneSource SceneSource::generator_file(std::filesystem::path path) {
   SceneSource source;
   source.kind = Kind::Generators;
   source.name = path.string();
+  source.files = DocumentFiles();  // the generated document names the file as given
   source.file = std::move(path);
   return source;
 }
@@ -70,10 +71,10 @@ ResolvedScene resolve_scene(const SceneSource& source, const std::filesystem::pa
                                            : load_scene_file(source.file, files);
       break;
     case Kind::Generators:
-      // The generated document names its generators inline or by a file given as is.
+      // The generated document holds its text inline, or names the file as given.
       resolved.generated = source.file.empty() ? generator_text_scene(source.text, source.name)
                                                : generator_file_scene(source.file.string());
-      resolved.scene = parse_scene(resolved.generated, DocumentFiles());
+      resolved.scene = parse_scene(resolved.generated, files);
       break;
   }
   resolved.name = resolved.scene.name.empty() ? "document" : resolved.scene.name;
