@@ -1,3 +1,7 @@
+// `geodesic render SCENE.json -o OUT.{png,exr,jpg}`: renders one view to a file, in passes
+// scheduled by the daemon's PassSlicer, until the stop condition (--spp, --time or
+// --target-error) is met; optionally a sample-parallel part (--samples-from, --accumulation)
+// and a report of the convergence series (--report).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -15,6 +19,7 @@
 #include "render/convergence.h"
 #include "render/exposure.h"
 #include "render/image_io.h"
+#include "render/pass_slicer.h"
 #include "render/pipeline_cache.h"
 #include "render/renderer.h"
 #include "render/shader_dump.h"
@@ -22,6 +27,10 @@
 
 namespace geodesic {
 namespace {
+
+// A pass that takes under a quarter second (half a slice) doubles the next, up to 64 samples.
+constexpr double kCliSliceSeconds = 0.5;
+constexpr uint32_t kCliMaxBatch = 64;
 
 struct RenderArgs {
   std::string scene, generators, output, device, backend = "auto", lighting;
@@ -217,23 +226,21 @@ int render_command(int argc, char** argv) {
   const auto start = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
 
-  // Batches grow until one takes about a quarter second: few submissions, live progress, and a
-  // dense series early on. One point of the series after every batch.
+  // Passes grow until one takes about a quarter second (render/pass_slicer.h: few submissions,
+  // live progress, and a dense series early on); the stop conditions cap them. One point of the
+  // series after every pass.
   ConvergenceLog log;
-  uint32_t batch = 1;
+  PassSlicer slicer(kCliSliceSeconds, kCliMaxBatch);
   ErrorSample now;
   const char* stopped_by = nullptr;
   while (!(stopped_by = stop.met(now))) {
-    if (stop.spp) batch = std::min(batch, *stop.spp - (renderer.samples() - first));
+    if (stop.spp) slicer.limit_batch(*stop.spp - (renderer.samples() - first));
     // Error falls as 1/sqrt(spp): do not overshoot the samples the target needs by much.
     if (stop.target_error && now.error > 0 && now.spp >= 8) {
       const double needed = now.spp * std::pow(now.error / *stop.target_error, 2) - now.spp;
-      batch = std::min<uint32_t>(batch, uint32_t(std::clamp(std::ceil(needed), 1.0, 64.0)));
+      slicer.limit_batch(uint32_t(std::clamp(std::ceil(needed), 1.0, double(kCliMaxBatch))));
     }
-    const double before = elapsed();
-    renderer.add_samples(batch);
-    const double took = elapsed() - before;
-    if (took < 0.25 && batch < 64) batch *= 2;
+    while (!slicer.render_slice(renderer)) {}
     now = {elapsed(), renderer.samples() - first, renderer.estimated_error()};
     log.record(now);
     const std::string error =

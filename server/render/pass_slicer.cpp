@@ -36,7 +36,7 @@ bool PassSlicer::render_slice(Renderer& renderer) {
   renderer.finish_pass(batch_);
   next_pixel_ = 0;
   if (whole_pass) {  // the pass fit in one slice: size the next one to the slice
-    if (last_seconds_ < slice_seconds_ / 2 && batch_ < kMaxBatch) batch_ *= 2;
+    if (last_seconds_ < slice_seconds_ / 2) batch_ = std::min(2 * batch_, max_batch_);
     else if (last_seconds_ > slice_seconds_ * 2 && batch_ > 1) batch_ /= 2;
   }
   return true;

@@ -102,5 +102,23 @@ TEST(Progressive, SlicesGrowFromTheMeasuredCostAndThePassDoublesItsBatchWhenItFi
   EXPECT_GT(slicer.seconds_per_pixel_sample(), 0);
 }
 
+// `geodesic render`'s slicer: batches double up to its largest (64 there), never past it, also
+// from a batch its stop condition cut to an odd size.
+TEST(Progressive, TheSlicersLargestBatchCapsTheDoubling) {
+  Scene scene = small_cornell();
+  scene.render.width = scene.render.height = 16;
+  Renderer renderer(device(), scene);
+  PassSlicer slicer(10, 4);
+  for (int pass = 0; pass < 8; ++pass)
+    while (!slicer.render_slice(renderer)) {}
+  // The first pass takes two slices (kFirstPixels, then the rest), then 2, 4, 4, ...
+  EXPECT_EQ(slicer.batch(), 4u);
+  EXPECT_EQ(renderer.samples(), 1u + 1u + 2u + 5 * 4u);
+  slicer.limit_batch(3);
+  EXPECT_TRUE(slicer.render_slice(renderer));
+  EXPECT_EQ(renderer.samples(), 27u);
+  EXPECT_EQ(slicer.batch(), 4u);  // 6 capped
+}
+
 }  // namespace
 }  // namespace geodesic::test
