@@ -72,7 +72,7 @@ RenderService::SessionId RenderService::open_session(PreparedScene&& scene, Fram
     return open_session(std::move(scene), std::move(on_frame), std::move(on_failure));
   }
   auto session = std::make_unique<Session>();
-  session->on_frame = std::move(on_frame);
+  session->stream = impl_->frames.open(std::move(on_frame));
   session->on_failure = std::move(on_failure);
   session->adopt(std::move(scene));
   const SessionId id = impl_->next_id++;
@@ -91,7 +91,10 @@ RenderService::SessionId RenderService::open_session(FrameCallback on_frame,
 
 void RenderService::close_session(SessionId id) {
   auto lock = impl_->lock();
-  impl_->sessions.erase(id);  // frees its renderer and buffers
+  auto it = impl_->sessions.find(id);
+  if (it == impl_->sessions.end()) return;
+  impl_->frames.close(*it->second->stream);  // no frame of it comes after this
+  impl_->sessions.erase(it);                 // frees its renderer and buffers
   impl_->stats.sessions = int(impl_->sessions.size());
   impl_->publish();
 }
@@ -273,8 +276,15 @@ void RenderService::count_background(uint64_t non_finite_samples, uint64_t trunc
 }
 
 ServiceStats RenderService::stats() const {
-  std::lock_guard hold(impl_->published_mutex);
-  return impl_->published;
+  ServiceStats stats;
+  {
+    std::lock_guard hold(impl_->published_mutex);
+    stats = impl_->published;
+  }
+  const FrameEncoder::Counters encoded = impl_->frames.counters();
+  stats.frames = stats.encode_count = encoded.frames;
+  stats.encode_seconds_sum = encoded.encode_seconds_sum;
+  return stats;
 }
 
 }  // namespace geodesic

@@ -96,8 +96,10 @@ struct PreparedScene {
 class RenderService {
  public:
   using SessionId = uint64_t;
-  // Called on the render thread with each new frame of the session; it must return quickly and
-  // must not call back into the service (hand the frame to another thread).
+  // Called on a frame-encoding thread with each new frame of the session, in order (a frame
+  // still waiting when a newer pass completes is dropped for it, and none comes once
+  // close_session has returned); it must return quickly and must not call back into the
+  // service (hand the frame to another thread).
   using FrameCallback = std::function<void(std::shared_ptr<const EncodedFrame>)>;
   // Called on the render thread, as FrameCallback, when rendering the session failed (a Vulkan
   // error such as VK_ERROR_DEVICE_LOST or VK_ERROR_OUT_OF_DEVICE_MEMORY): the session is closed

@@ -15,7 +15,7 @@
 #include <thread>
 #include <vector>
 
-#include "render/jpeg_encoder.h"
+#include "render/frame_encoder.h"
 #include "render/render_service.h"
 #include "render/render_session.h"
 #include "render/renderer.h"
@@ -40,7 +40,8 @@ struct RenderService::Impl {
   Clock::time_point next_device_attempt;
   std::string scene_dir;
   ServiceLimits limits;
-  JpegEncoder encoder;
+  // Resolves and encodes the sessions' passes beside the render thread, outside the lock.
+  FrameEncoder frames;
 
   mutable std::mutex mutex;  // guards everything below and all rendering
   // Callers waiting for the mutex: the render thread steps aside for them between slices, so
@@ -104,7 +105,7 @@ struct RenderService::Impl {
   // The render thread: one slice at a time, to the session the rota names.
   void run();
 
-  // Closes a session whose render failed; its client hears why.
+  // Closes a session whose render failed; its client hears why, and gets no frame after.
   void fail(SessionId id, const std::string& reason);
 
   // A lost device can only have its objects destroyed: the sessions' renderers go, a new device
@@ -117,7 +118,8 @@ struct RenderService::Impl {
   // true when one had it.
   bool hand_over_background(std::unique_lock<std::mutex>& lock);
 
-  // One slice of the session's pass; its frame goes out when the pass is complete.
+  // One slice of the session's pass; when the pass is complete, its frame goes to the
+  // session's stream.
   void serve(Session& s);
 };
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/exposure.h"
 
 namespace geodesic {
 namespace {
@@ -34,7 +33,6 @@ void RenderSession::adopt(PreparedScene prepared) {
   height = scene.render.height;
   pose = scene.camera.pose;
   slicer.reset();
-  last_image = {};
   reexpose = false;
   restart(false);
 }
@@ -63,20 +61,19 @@ void RenderSession::restart(bool now_moving) {
   truncated = 0;  // set_view clears the tracer's counters, all but the non-finite one
   reset_time = Clock::now();
   slicer.restart();
-  last_image = {};  // of the old view
+  pass_shown = false;  // a new exposure waits for this view's first pass
   first_frame_due = true;
 }
 
-std::shared_ptr<EncodedFrame> RenderSession::serve(JpegEncoder& encoder, ServiceStats& stats,
-                                                   double& pixel_samples) {
+void RenderSession::serve(FrameEncoder& frames, ServiceStats& stats, double& pixel_samples) {
   if (reexpose) {
     reexpose = false;
-    if (!last_image.rgb.empty()) return encode(encoder, stats);
+    if (pass_shown) return frames.reexpose(stream, scene.render.exposure);
   }
   if (moving && seconds_since(last_move) > kSettleSeconds) restart(false);
   const bool pass_done = slicer.render_slice(*renderer);
   pixel_samples += slicer.last_pixel_samples();
-  if (!pass_done) return nullptr;
+  if (!pass_done) return;
 
   // A counter below the last one added belongs to a new renderer (after a device loss).
   const uint64_t now_non_finite = renderer->non_finite_samples();
@@ -91,24 +88,14 @@ std::shared_ptr<EncodedFrame> RenderSession::serve(JpegEncoder& encoder, Service
   stats.non_finite_samples += new_non_finite;
   stats.truncated_geodesics += new_truncated;
   first_frame_due = false;
-  last_image = renderer->image();
-  last_info = {0, renderer->samples(), seconds_since(reset_time), renderer->estimated_error(),
-               renderer->width(), renderer->height(), moving, 0, pose, scene_non_finite,
-               scene_truncated};
-  return encode(encoder, stats);
-}
-
-std::shared_ptr<EncodedFrame> RenderSession::encode(JpegEncoder& encoder, ServiceStats& stats) {
-  const auto encode_start = Clock::now();
-  auto encoded = std::make_shared<EncodedFrame>();
-  encoded->info = last_info;
-  encoded->info.frame = ++frame;
-  encoded->info.exposure = exposure_stops(scene.render.exposure, last_image);
-  encoded->jpeg = encoder.encode(last_image, 85, exposure_scale(encoded->info.exposure));
-  stats.encode_seconds_sum += seconds_since(encode_start);
-  ++stats.encode_count;
-  ++stats.frames;
-  return encoded;
+  pass_shown = true;
+  // The render thread goes on into this accumulation: the stream gets a copy. The error, the
+  // frame number and the exposure's stops are filled in where it is resolved.
+  const std::span<const float> sums = renderer->accumulation();
+  frames.submit(stream, {{sums.begin(), sums.end()},
+                         {0, renderer->samples(), seconds_since(reset_time), -1, renderer->width(),
+                          renderer->height(), moving, 0, pose, scene_non_finite, scene_truncated},
+                         scene.render.exposure});
 }
 
 void RenderSession::set_exposure(const Exposure& exposure) {

@@ -1,6 +1,7 @@
 // One interactive session of the render service (render/render_service.h): its scene and
-// renderer, camera, view and pass slicer, and the frame it streams after each pass. Not
-// thread-safe: the service's lock guards it; only the render thread renders it.
+// renderer, camera, view and pass slicer, and the stream its frames go out on after each pass
+// (encoded there, off the render thread: render/frame_encoder.h). Not thread-safe: the
+// service's lock guards it; only the render thread renders it.
 #pragma once
 
 #include <chrono>
@@ -8,7 +9,7 @@
 #include <memory>
 #include <string>
 
-#include "render/jpeg_encoder.h"
+#include "render/frame_encoder.h"
 #include "render/pass_slicer.h"
 #include "render/render_service.h"
 
@@ -17,7 +18,7 @@ namespace geodesic {
 struct RenderSession {
   using Clock = std::chrono::steady_clock;
 
-  RenderService::FrameCallback on_frame;
+  std::shared_ptr<FrameEncoder::Stream> stream;
   RenderService::FailureCallback on_failure;
   Scene scene;
   std::string scene_name;
@@ -27,15 +28,13 @@ struct RenderSession {
   int width = 0, height = 0;  // the full resolution asked for
   bool moving = false;
   Clock::time_point last_move, reset_time;
-  uint64_t frame = 0;
   PassSlicer slicer{RenderService::kSliceSeconds};
   // The renderer's device counters as last added to the totals (the truncated count starts over
   // with each view), and the totals since the scene was installed, which frames report.
   uint64_t non_finite = 0, truncated = 0;
   uint64_t scene_non_finite = 0, scene_truncated = 0;
-  // The last complete pass, linear, and its frame's description: a new exposure re-encodes it.
-  Image last_image;
-  FrameInfo last_info;
+  // A pass of this view has gone to the stream: a new exposure re-encodes its image.
+  bool pass_shown = false;
   bool reexpose = false;
   // A new view (opened, moved, resized, another scene) whose first frame has not gone out yet.
   bool first_frame_due = true;
@@ -48,18 +47,15 @@ struct RenderSession {
   // A new view: reduced resolution while moving, full when still; accumulation starts over.
   void restart(bool moving);
   // One slice of the current pass (after a move, full resolution once the camera has settled);
-  // the frame, encoded, when the slice completed the pass, else null. Adds the slice's pixel
-  // samples to `pixel_samples` and the frame's encode time and counters to `stats`.
-  std::shared_ptr<EncodedFrame> serve(JpegEncoder& encoder, ServiceStats& stats,
-                                      double& pixel_samples);
+  // when the slice completed the pass, a copy of its accumulation goes to `frames` to be
+  // resolved and encoded. Adds the slice's pixel samples to `pixel_samples` and the pass's
+  // counters to `stats`.
+  void serve(FrameEncoder& frames, ServiceStats& stats, double& pixel_samples);
   SceneInfo info() const;
-  // Sets the exposure; the last frame is encoded again with it at the next serve().
+  // Sets the exposure; the last pass is encoded again with it at the next serve().
   void set_exposure(const Exposure& exposure);
   // Someone waits for this session's next frame: a new view's first, or a new exposure's.
   bool urgent() const { return first_frame_due || reexpose; }
-
- private:
-  std::shared_ptr<EncodedFrame> encode(JpegEncoder& encoder, ServiceStats& stats);
 };
 
 }  // namespace geodesic

@@ -22,7 +22,9 @@ RenderService::Impl::Impl(const std::string& device, std::string dir, ServiceLim
     : device_selector(device),
       ctx(std::make_unique<VulkanContext>(device)),
       scene_dir(std::move(dir)),
-      limits(l) {
+      limits(l),
+      // Beside the render thread, which lavapipe's own threads keep busy: half the cores.
+      frames(std::clamp(int(std::thread::hardware_concurrency()) / 2, 1, 4)) {
   stats.device = ctx->description().name;
   publish();
   thread = std::thread([this] { run(); });
@@ -83,6 +85,7 @@ void RenderService::Impl::run() {
 void RenderService::Impl::fail(SessionId id, const std::string& reason) {
   auto session = sessions.extract(id);
   stats.sessions = int(sessions.size());
+  frames.close(*session.mapped()->stream);
   std::fprintf(stderr, "geodesic: session %llu closed: %s\n",
                static_cast<unsigned long long>(id), reason.c_str());
   if (session.mapped()->on_failure) session.mapped()->on_failure(reason);
@@ -128,14 +131,13 @@ bool RenderService::Impl::hand_over_background(std::unique_lock<std::mutex>& loc
 }
 
 void RenderService::Impl::serve(Session& s) {
-  auto frame = s.serve(encoder, stats, recent_samples);
+  s.serve(frames, stats, recent_samples);
   const double window = seconds_since(window_start);
   if (window > 1.0) {
     stats.samples_per_second = recent_samples / window;
     recent_samples = 0;
     window_start = Clock::now();
   }
-  if (frame) s.on_frame(std::move(frame));
 }
 
 }  // namespace geodesic

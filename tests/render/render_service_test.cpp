@@ -182,5 +182,39 @@ TEST(RenderService, ANewViewsFirstFrameDoesNotWaitForTheRound) {
   for (const auto id : ids) service.close_session(id);
 }
 
+// Frames are encoded off the render thread (render/frame_encoder.h): a session's frames still
+// come numbered one after another, none after close_session has returned, while the session
+// beside it streams on.
+TEST(RenderService, FramesComeInOrderAndNoneAfterTheSessionIsClosed) {
+  std::mutex mutex;
+  std::vector<uint64_t> numbers;  // of the closed session's frames, as they came
+  bool closed = false;
+  int after_close = 0;
+  FrameLog other;  // outlives the service, whose frame workers deliver into it until it ends
+  RenderService service("", source_path("scenes").string());
+  const auto id = service.open_session([&](std::shared_ptr<const EncodedFrame> frame) {
+    std::lock_guard lock(mutex);
+    numbers.push_back(frame->info.frame);
+    if (closed) ++after_close;
+  });
+  const auto beside = service.open_session(other.callback());
+  service.apply_settings(id, {.width = 48, .height = 48});
+  service.apply_settings(beside, {.width = 48, .height = 48});
+  const auto streaming = other.wait_for([](const FrameInfo& f) { return f.frame >= 10; });
+  ASSERT_TRUE(streaming);
+  service.close_session(id);
+  {
+    std::lock_guard lock(mutex);
+    closed = true;
+  }
+  // The render thread goes round several times more.
+  ASSERT_TRUE(other.wait_for([&](const FrameInfo& f) { return f.frame >= streaming->info.frame + 10; }));
+  std::lock_guard lock(mutex);
+  EXPECT_EQ(after_close, 0);
+  ASSERT_GE(numbers.size(), 5u);
+  for (size_t i = 0; i < numbers.size(); ++i) EXPECT_EQ(numbers[i], i + 1);
+  service.close_session(beside);
+}
+
 }  // namespace
 }  // namespace geodesic::test
