@@ -1,9 +1,12 @@
 // Descriptor layout and GPU structs shared by every entry point; mirrors
-// server/render/packed_scene.h and server/render/frame_uniforms.h (std430 / std140). A buffer
-// is declared only when the pipeline's features read it (server/render/pipeline_features.cpp
-// decides the same, binding by binding).
+// server/render/packed_scene.h and server/render/frame_uniforms.h (std430 / std140), which
+// tests/unit/gpu_layout_test.cpp holds to the compiled layout; binding numbers from
+// common/bindings.h. A buffer is declared only when the pipeline's features read it
+// (server/render/pipeline_features.cpp decides the same, binding by binding).
 #ifndef SCENE_DATA_GLSL
 #define SCENE_DATA_GLSL
+
+#include "common/bindings.h"
 
 struct Material {
   vec4 ambient;   // k_a
@@ -94,14 +97,15 @@ struct CellFace {
   uint tubes;     // the cell's tubes whose first face this is: local offset | count << 16
 };
 
-layout(set = 0, binding = 0) uniform accelerationStructureEXT uScene;
+layout(set = 0, binding = BINDING_SCENE) uniform accelerationStructureEXT uScene;
 // Two halves of width * height pixels each: even- and odd-numbered samples (sum rgb, count a).
-layout(set = 0, binding = 1, std430) buffer Accumulation { vec4 accumulation[]; };
+layout(set = 0, binding = BINDING_ACCUMULATION, std430)
+    buffer Accumulation { vec4 accumulation[]; };
 // Frame.lightSampling: LightSampling (server/scene/scene.h) as frame_uniforms.h packs it.
 const uint LIGHT_SAMPLING_MIS = 0u;
 const uint LIGHT_SAMPLING_BSDF = 1u;
 const uint LIGHT_SAMPLING_LIGHT = 2u;
-layout(set = 0, binding = 2, std140) uniform Frame {
+layout(set = 0, binding = BINDING_FRAME, std140) uniform Frame {
   mat4 cameraPose;    // camera frame -> model isometry
   vec4 ambientLight;  // L_a
   float tanHalfFovY;
@@ -121,43 +125,51 @@ layout(set = 0, binding = 2, std140) uniform Frame {
   float clampLuminance;  // 0: no clamp
   uint pad0;
 } frame;
-layout(set = 0, binding = 4, std430) readonly buffer Materials { Material materials[]; };
+layout(set = 0, binding = BINDING_MATERIALS, std430)
+    readonly buffer Materials { Material materials[]; };
 // Rays traced per pixel (camera, bounce and shadow segments), for rays/s figures.
-layout(set = 0, binding = 10, std430) buffer RayCounts { uint rayCounts[]; };
+layout(set = 0, binding = BINDING_RAY_COUNTS, std430) buffer RayCounts { uint rayCounts[]; };
 // Samples dropped because they were NaN or infinite (tests require none), and the tracer's
 // counters since the last clear: face crossings, and rays cut off at MAX_CROSSINGS.
-layout(set = 0, binding = 14, std430) buffer Diagnostics {
+layout(set = 0, binding = BINDING_DIAGNOSTICS, std430) buffer Diagnostics {
   uint nonFiniteSamples;
   uint crossedFacesTotal;
   uint truncatedRaysTotal;
 };
 #if defined(HAS_SPHERES)
-layout(set = 0, binding = 3, std430) readonly buffer Spheres { Sphere spheres[]; };
-layout(set = 0, binding = 11, std430) readonly buffer SphereRefs { SphereRef sphereRefs[]; };
+layout(set = 0, binding = BINDING_SPHERES, std430) readonly buffer Spheres { Sphere spheres[]; };
+layout(set = 0, binding = BINDING_SPHERE_REFS, std430)
+    readonly buffer SphereRefs { SphereRef sphereRefs[]; };
 #endif
 #if defined(HAS_TRIANGLES)
-layout(set = 0, binding = 6, std430) readonly buffer Positions { vec4 positions[]; };  // chart
-layout(set = 0, binding = 8, std430) readonly buffer Indices { uint indices[]; };
-layout(set = 0, binding = 9, std430) readonly buffer Triangles { TriangleInfo triangles[]; };
+layout(set = 0, binding = BINDING_POSITIONS, std430)  // chart
+    readonly buffer Positions { vec4 positions[]; };
+layout(set = 0, binding = BINDING_INDICES, std430) readonly buffer Indices { uint indices[]; };
+layout(set = 0, binding = BINDING_TRIANGLES, std430)
+    readonly buffer Triangles { TriangleInfo triangles[]; };
 #endif
 #if defined(HAS_SMOOTH_NORMALS)
-layout(set = 0, binding = 7, std430) readonly buffer Normals { vec4 normals[]; };  // E3
+layout(set = 0, binding = BINDING_NORMALS, std430)  // E3
+    readonly buffer Normals { vec4 normals[]; };
 #endif
 #if defined(LIGHTING_PAPER) && defined(HAS_POINT_LIGHTS)
-layout(set = 0, binding = 5, std430) readonly buffer Lights { PointLight lights[]; };
+layout(set = 0, binding = BINDING_LIGHTS, std430) readonly buffer Lights { PointLight lights[]; };
 #endif
 #if defined(CELL_CROSSING) || defined(MULTIPLE_CHARTS)
-layout(set = 0, binding = 12, std430) readonly buffer Cells { Cell cells[]; };
+layout(set = 0, binding = BINDING_CELLS, std430) readonly buffer Cells { Cell cells[]; };
 #endif
 #if defined(CELL_CROSSING)
-layout(set = 0, binding = 13, std430) readonly buffer CellFaces { CellFace cellFaces[]; };
+layout(set = 0, binding = BINDING_CELL_FACES, std430)
+    readonly buffer CellFaces { CellFace cellFaces[]; };
 #endif
 #if defined(HAS_TUBES)
-layout(set = 0, binding = 17, std430) readonly buffer Tubes { Tube tubes[]; };
+layout(set = 0, binding = BINDING_TUBES, std430) readonly buffer Tubes { Tube tubes[]; };
 #endif
 #if defined(LIGHT_SAMPLING)
-layout(set = 0, binding = 15, std430) readonly buffer Emitters { Emitter emitters[]; };
-layout(set = 0, binding = 16, std430) readonly buffer LightImages { LightImage lightImages[]; };
+layout(set = 0, binding = BINDING_EMITTERS, std430)
+    readonly buffer Emitters { Emitter emitters[]; };
+layout(set = 0, binding = BINDING_LIGHT_IMAGES, std430)
+    readonly buffer LightImages { LightImage lightImages[]; };
 #endif
 
 // Loop bounds a specialised pipeline bakes in as constants; the all-features pipeline reads
