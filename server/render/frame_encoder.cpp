@@ -57,14 +57,20 @@ class FrameEncoder::Stream {
 
   void deliver(std::shared_ptr<const EncodedFrame> frame) {
     std::lock_guard hold(delivery_);
-    if (!closed) on_frame_(std::move(frame));
+    if (!closed && on_frame_) on_frame_(std::move(frame));
   }
 
-  // Waits for a delivery under way; with `closed` set first, none starts after.
-  void wait_for_delivery() { std::lock_guard hold(delivery_); }
+  // Waits for a delivery under way (with `closed` set first, none starts after), then lets the
+  // callback go on the closing thread: a worker may hold the stream a little longer, and what
+  // the callback holds (a socket's strand) must not outlive the session's close (it would be
+  // destroyed on the worker after its io_context).
+  void release() {
+    std::lock_guard hold(delivery_);
+    on_frame_ = nullptr;
+  }
 
  private:
-  const RenderService::FrameCallback on_frame_;
+  RenderService::FrameCallback on_frame_;
   std::mutex delivery_;
   // The encoding worker's own.
   Image last_image_;
@@ -119,7 +125,7 @@ void FrameEncoder::close(Stream& stream) {
     stream.pass.reset();
     stream.exposure.reset();
   }
-  stream.wait_for_delivery();
+  stream.release();
 }
 
 FrameEncoder::Counters FrameEncoder::counters() const {

@@ -48,7 +48,8 @@ class FrameEncoder {
   // The last pass's image encoded again with `exposure`; when a pass still waits, that pass is
   // encoded with it instead. Nothing when the stream has resolved no pass yet.
   void reexpose(const std::shared_ptr<Stream>& stream, const Exposure& exposure);
-  // No frame of `stream` is delivered once this returns (it waits for one being delivered).
+  // No frame of `stream` is delivered once this returns (it waits for one being delivered),
+  // and its callback has been destroyed on the calling thread.
   void close(Stream& stream);
 
   struct Counters {
