@@ -213,7 +213,11 @@ std::optional<PreparedScene> RenderService::prepare_settings(SessionId id,
 
 bool RenderService::run_background(const std::function<void(VulkanContext&)>& work) {
   Impl& impl = *impl_;
-  std::unique_lock lock(impl.mutex);  // not impl.lock(): that one has priority
+  // Taking a ticket goes ahead of the render thread's next slice (impl.lock()), as a move does:
+  // with a plain lock the caller had to win the mutex in the instant between two slices, and
+  // on a loaded machine it lost for seconds. The turn itself still waits for the end of a
+  // round and for every session to be still.
+  auto lock = impl.lock();
   if (impl.stopping) return false;
   const uint64_t ticket = impl.next_ticket++;
   impl.background_queue.push_back(ticket);
