@@ -1,45 +1,26 @@
 // What the `physical` model samples light from: point lights, emissive spheres and emissive
 // triangles, each chosen with probability proportional to its power, and each with its images
 // under the manifold's group (the copies of the cell around the domain) that next-event
-// estimation considers. Pure data, built without a device; mirrored by `Emitter` in
-// shaders/common/scene_data.glsl and read by shaders/lights/emitters.glsl.
+// estimation considers. Pure data, built without a device; read by
+// shaders/lights/emitters.glsl.
 #pragma once
 
 #include <array>
 #include <cstdint>
 #include <vector>
 
+#include "common/gpu_types.h"
 #include "scene/scene.h"
 
 namespace geodesic {
 
 enum class EmitterKind : uint32_t { Point = 0, Sphere = 1, Triangle = 2 };
 
-struct GpuEmitter {
-  std::array<float, 4> center;    // model point: the light, the sphere's centre, the
-                                  // triangle's centroid
-  std::array<float, 4> corner;    // triangle: first corner in the chart around the centroid
-  std::array<float, 4> edge1;     // triangle: the two edges from it, same chart
-  std::array<float, 4> edge2;
-  std::array<float, 4> radiance;  // rgb: intensity (point) or emitted radiance; w: model area
-  uint32_t kind;
-  float radius;  // sphere: geodesic radius; triangle: largest distance centroid - corner
-  float pmf;     // probability of choosing this emitter
-  float cdf;     // sum of pmf up to and including this one
-  uint32_t image_begin;  // its images: image_count isometries from image_begin in `images`
-  uint32_t image_count;
-  uint32_t padding[2];
-};
-static_assert(sizeof(GpuEmitter) == 112, "must match the std430 layout of Emitter");
-
-// One image of an emitter under the group, mirrored by `LightImage` in scene_data.glsl: the
-// isometry, and the emitter's centre carried by it (computed in double), which is all that
-// light sampling reads of every image at every shading point.
-struct GpuLightImage {
-  std::array<float, 16> isometry;  // column-major, of the universal cover
-  std::array<float, 4> center;     // isometry * GpuEmitter::center
-};
-static_assert(sizeof(GpuLightImage) == 80, "must match the std430 layout of LightImage");
+// The emitter and its images as the shaders read them (shaders/common/gpu_types.h): an image
+// is the isometry and the emitter's centre carried by it (computed in double), which is all
+// that light sampling reads of every image at every shading point.
+using GpuEmitter = gpu::Emitter;
+using GpuLightImage = gpu::LightImage;
 
 // Images kept per emitter: those within the cutoff of the cell's centre (the origin), at
 // most this many, nearest first. In S3 the long way round is also taken when the cutoff

@@ -1,5 +1,5 @@
-// The scene flattened into the arrays the shaders read (layouts match
-// shaders/common/scene_data.glsl, std430): model-space spheres and lights, and for every cell
+// The scene flattened into the arrays the shaders read (std430; the structs are
+// shaders/common/gpu_types.h's, which the shaders compile too): model-space spheres and lights, and for every cell
 // of the chart atlas its triangles and edge tubes (in the cell's chart) and sphere bounding
 // boxes. Pure data:
 // built and tested without a device.
@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "common/gpu_types.h"
 #include "render/cells.h"
 #include "render/emitters.h"
 #include "render/spatial_order.h"
@@ -19,74 +20,15 @@ namespace geodesic {
 using Float4 = std::array<float, 4>;
 using Float16 = std::array<float, 16>;
 
-struct GpuMaterial {
-  Float4 ambient;   // rgb
-  Float4 diffuse;   // rgb
-  Float4 specular;  // rgb, w = shininess k_e
-  Float4 mirror;    // rgb
-  Float4 transmission;  // rgb, w = index of refraction
-  Float4 emission;  // rgb
-};
-
-struct GpuSphere {
-  Float4 center;  // model point
-  float radius;   // geodesic
-  uint32_t material;
-  uint32_t emitter;  // index into the emitters, or EmitterTable::kNone
-  uint32_t padding;
-};
-
-struct GpuSphereRef {
-  uint32_t sphere;
-  uint32_t cell;
-};
-
-struct GpuPointLight {
-  Float4 position;  // model point
-  Float4 intensity;
-};
-
-struct GpuTriangle {
-  uint32_t material;
-  uint32_t smooth;  // 1 when the mesh supplies per-vertex normals (E3)
-  uint32_t cell;
-  uint32_t emitter;  // index into the emitters, or EmitterTable::kNone
-};
-
-struct GpuCell {
-  Float16 chart_isometry;  // column-major
-  uint32_t face_begin;
-  uint32_t face_count;
-  uint32_t tube_begin;  // its edge tubes: tubes[tube_begin, tube_begin + tube_count)
-  uint32_t tube_count;
-  float tube_reach;     // the largest radius among them
-  // Its tubes sorted by their first face (GpuCellFace::tubes), then those always tested:
-  // tubes[tube_begin + always_begin, tube_begin + tube_count).
-  uint32_t always_begin;
-  // Its sphere refs, sphere_refs[sphere_begin, sphere_begin + sphere_count) (SPHERE_LIST).
-  uint32_t sphere_begin;
-  uint32_t sphere_count;
-};
-
-// An edge tube's capsule in its cell's chart (scene.h EdgeTube), and two of the cell's faces
-// whose planes hold its axis (render/tube_culling.h).
-struct GpuTube {
-  Float4 a;  // xyz: one end of the axis; w: chart radius
-  Float4 b;  // xyz: the other end
-  uint32_t material;
-  uint32_t face_a, face_b;  // local face indices; kAlwaysTest when no two faces below 32 do
-  uint32_t padding;
-};
-
-struct GpuCellFace {
-  Float4 plane;     // normal, delta
-  Float16 pairing;  // column-major
-  uint32_t target_cell;
-  uint32_t partner;
-  uint32_t internal;  // 1: a wall between pieces, not counted as a crossing (INTERNAL_WALLS)
-  // The cell's tubes whose first face is this one: local offset | count << 16 (tube_culling.h).
-  uint32_t tubes;
-};
+// The GPU-visible structs, defined once with the shaders (shaders/common/gpu_types.h).
+using GpuMaterial = gpu::Material;
+using GpuSphere = gpu::Sphere;
+using GpuSphereRef = gpu::SphereRef;
+using GpuPointLight = gpu::PointLight;
+using GpuTriangle = gpu::TriangleInfo;
+using GpuCell = gpu::Cell;
+using GpuTube = gpu::Tube;
+using GpuCellFace = gpu::CellFace;
 
 struct GpuAabb {
   float min[3];

@@ -85,7 +85,7 @@ PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
                     return c.sphere_count <= kSphereListLength;
                   });
   f.smooth_normals = std::any_of(packed.triangles.begin(), packed.triangles.end(),
-                                 [](const GpuTriangle& t) { return t.smooth != 0; });
+                                 [](const GpuTriangle& t) { return t.smooth_normals != 0; });
   f.paper = scene.render.lighting == LightingModel::Paper;
   f.physical = !f.paper;
   f.light_sampling = f.physical && scene.render.light_sampling != LightSampling::Bsdf &&

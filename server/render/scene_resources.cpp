@@ -35,7 +35,7 @@ FrameUniforms make_uniforms(const Scene& scene, const PackedScene& packed) {
   u.light_sampling = static_cast<uint32_t>(scene.render.light_sampling);
   u.emitter_count = static_cast<uint32_t>(packed.emitters.size());
   u.light_cutoff = static_cast<float>(packed.light_cutoff);
-  u.clamp = static_cast<float>(scene.render.clamp);
+  u.clamp_luminance = static_cast<float>(scene.render.clamp);
   return u;
 }
 

@@ -45,7 +45,7 @@ ChartHit noChartHit() { return ChartHit(0u, 0u, FAR, FAR, vec2(0.0)); }
 // cell charted about the origin, so the identity compiles away there.
 mat4 cellChartIsometry(uint cell) {
 #if defined(MULTIPLE_CHARTS)
-  return cells[cell].chartIsometry;
+  return cells[cell].chart_isometry;
 #else
   return mat4(1.0);
 #endif

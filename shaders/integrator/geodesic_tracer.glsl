@@ -40,8 +40,8 @@ uint exitFace(GeodesicRay ray, ChartLine line, out float sExit) {
   sExit = FAR;
   uint face = NO_FACE;
   Cell cell = cells[ray.cell];
-  for (uint i = 0u; i < cell.faceCount; ++i) {
-    uint f = cell.faceBegin + i;
+  for (uint i = 0u; i < cell.face_count; ++i) {
+    uint f = cell.face_begin + i;
     vec4 plane = cellFaces[f].plane;
     float towards = dot(plane.xyz, line.d);
     float height = plane.w - dot(plane.xyz, line.o);  // above the face's plane, inside
@@ -76,7 +76,7 @@ GeodesicRay crossFace(GeodesicRay ray, uint face, float t) {
   GeodesicRay next;
   next.p = normalizePoint(q);
   next.v = normalizeTangent(next.p, u);
-  next.cell = f.targetCell;
+  next.cell = f.target_cell;
   next.enteredFace = f.partner;
   return next;
 }

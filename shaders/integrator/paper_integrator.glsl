@@ -7,7 +7,7 @@
 vec3 paperRadiance(GeodesicRay ray, PathSampler samples) {
   vec3 radiance = vec3(0.0);
   vec3 throughput = vec3(1.0);
-  for (uint depth = 0u; depth <= frame.maxDepth; ++depth) {
+  for (uint depth = 0u; depth <= frame.max_depth; ++depth) {
     ChartHit hit;
     float travelled;
     if (!followGeodesic(ray, FAR, false, hit, travelled)) break;  // escaped: black background
@@ -16,18 +16,18 @@ vec3 paperRadiance(GeodesicRay ray, PathSampler samples) {
     LocalFrame local = localFrameAt(s.position);
     vec3 n = toLocal(local, s.normal), ng = toLocal(local, s.geometricNormal);
     vec3 incoming = toLocal(local, s.incoming);
-    radiance += throughput * (m.emission.rgb + m.ambient.rgb * frame.ambientLight.rgb);
+    radiance += throughput * (m.emission.rgb + m.ambient.rgb * frame.ambient_light.rgb);
 #if defined(HAS_POINT_LIGHTS)
     radiance += throughput * directIllumination(s, local, n, ng, -incoming, m);
 #endif
-    if (depth == frame.maxDepth) break;
+    if (depth == frame.max_depth) break;
     vec2 lobeRoulette = bounceSample(samples, depth, PAIR_LOBE_ROULETTE);
     vec3 direction, weight;
     if (!sampleBounce(n, ng, incoming, m, lobeRoulette.x,
                       bounceSample(samples, depth, PAIR_DIRECTION), direction, weight))
       break;
     throughput *= weight;
-    if (frame.russianRoulette != 0u && depth >= 1u &&
+    if (frame.russian_roulette != 0u && depth >= 1u &&
         !survivesRussianRoulette(throughput, lobeRoulette.y))
       break;
     vec4 origin = offsetFromSurface(s.position, s.geometricNormal);

@@ -65,12 +65,12 @@ vec3 physicalRadiance(GeodesicRay ray, PathSampler samples) {
   float bsdfDensity = 0.0;
   vec4 from = ray.p, heading = ray.v;  // the last vertex and the direction that left it
 #if defined(LIGHT_SAMPLING)
-  bool nee = frame.lightSampling != LIGHT_SAMPLING_BSDF && EMITTER_COUNT > 0u;
-  bool lightOnly = frame.lightSampling == LIGHT_SAMPLING_LIGHT;
+  bool nee = frame.light_sampling != LIGHT_SAMPLING_BSDF && EMITTER_COUNT > 0u;
+  bool lightOnly = frame.light_sampling == LIGHT_SAMPLING_LIGHT;
 #else
   const bool nee = false;  // BSDF sampling alone: emission is found by hitting it
 #endif
-  for (uint depth = 0u; depth <= frame.maxDepth + 1u; ++depth) {
+  for (uint depth = 0u; depth <= frame.max_depth + 1u; ++depth) {
     ChartHit hit;
     float travelled;
     if (!followGeodesic(ray, FAR, false, hit, travelled)) break;  // escaped: black background
@@ -88,11 +88,11 @@ vec3 physicalRadiance(GeodesicRay ray, PathSampler samples) {
 #endif
       radiance += throughput * m.emission.rgb * weight;
     }
-    if (depth > frame.maxDepth) break;  // past the last bounce only emission counts
+    if (depth > frame.max_depth) break;  // past the last bounce only emission counts
     LocalFrame local = localFrameAt(s.position);
     vec3 n = toLocal(local, s.normal);
     vec3 wo = -toLocal(local, s.incoming);
-    bool last = depth == frame.maxDepth;
+    bool last = depth == frame.max_depth;
 #if defined(LIGHT_SAMPLING)
     if (nee && hasSmoothLobe(m))
       radiance += throughput * nextEventEstimate(s, local, n, wo, m, last, lightOnly, samples, depth);
@@ -110,7 +110,7 @@ vec3 physicalRadiance(GeodesicRay ray, PathSampler samples) {
     throughput *= bs.weight;
     misWeighted = nee && !bs.delta;
     bsdfDensity = bs.pdf;
-    if (frame.russianRoulette != 0u && depth >= 3u &&
+    if (frame.russian_roulette != 0u && depth >= 3u &&
         !survivesRussianRoulette(throughput, lobeRoulette.y))
       break;
     from = s.position;

@@ -55,7 +55,7 @@ vec2 imageWeights(Emitter e, vec4 x, vec4 c, vec4 ng) {
   if (e.kind == EMITTER_SPHERE && sphereSurrounds(e, geodesicDistance(x, c)))
     return vec2(4.0 * PI, 0.0);
 #endif
-  vec2 branches = vec2(1.0, branchCount() > 1u && frame.lightCutoff > PI ? 1.0 : 0.0);
+  vec2 branches = vec2(1.0, branchCount() > 1u && frame.light_cutoff > PI ? 1.0 : 0.0);
   float spread = max(areaFactorBetween(x, c), 1e-12);  // A(2 pi - d) = A(d) in S3
 #if defined(HAS_POINT_LIGHTS)
   if (e.kind == EMITTER_POINT) {
@@ -114,15 +114,15 @@ bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) 
   // u.y: the map from u.y to the choice is monotone, so samples stratified in u.y (the pixel's
   // Sobol points, common/sampler.glsl) choose every image in close to its share.
   float total = 0.0;
-  for (uint j = 0u; j < e.imageCount; ++j) {
-    vec2 weights = imageWeights(e, x, lightImages[e.imageBegin + j].center, ng);
+  for (uint j = 0u; j < e.image_count; ++j) {
+    vec2 weights = imageWeights(e, x, lightImages[e.image_begin + j].center, ng);
     total += weights.x + weights.y;
   }
   if (total <= 0.0) return false;
   float target = u.y * total, w = 0.0;
-  uint image = e.imageCount, branch = 0u;
-  for (uint j = 0u; j < e.imageCount && target >= 0.0; ++j) {
-    vec2 weights = imageWeights(e, x, lightImages[e.imageBegin + j].center, ng);
+  uint image = e.image_count, branch = 0u;
+  for (uint j = 0u; j < e.image_count && target >= 0.0; ++j) {
+    vec2 weights = imageWeights(e, x, lightImages[e.image_begin + j].center, ng);
     for (uint b = 0u; b < branchCount() && target >= 0.0; ++b) {
       if (weights[b] <= 0.0) continue;
       image = j;  // the last one with weight, should rounding leave target past the sum
@@ -131,10 +131,10 @@ bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) 
       target -= w;
     }
   }
-  if (image == e.imageCount) return false;
+  if (image == e.image_count) return false;
   float choice = w / total;
-  mat4 g = lightImages[e.imageBegin + image].isometry;
-  vec4 c = lightImages[e.imageBegin + image].center;
+  mat4 g = lightImages[e.image_begin + image].isometry;
+  vec4 c = lightImages[e.image_begin + image].center;
   float d = geodesicDistance(x, c);
   float sign = branch == 0u ? 1.0 : -1.0;
   vec4 toward = geodesicDirection(x, c);
@@ -208,8 +208,8 @@ float lightPdf(uint index, vec4 x, vec4 direction, float t, float cosLight) {
   float total = 0.0, best = FAR;
   uint image = 0u;
   vec2 met = vec2(0.0);
-  for (uint j = 0u; j < e.imageCount; ++j) {
-    vec4 cj = lightImages[e.imageBegin + j].center;
+  for (uint j = 0u; j < e.image_count; ++j) {
+    vec4 cj = lightImages[e.image_begin + j].center;
     vec2 weights = imageWeights(e, x, cj, vec4(0.0));
     total += weights.x + weights.y;
 #if defined(CELL_CROSSING)
@@ -227,8 +227,8 @@ float lightPdf(uint index, vec4 x, vec4 direction, float t, float cosLight) {
   float slack = 1e-3 * (1.0 + t);
   if (best > (e.kind == EMITTER_SPHERE ? slack : e.radius + slack)) return 0.0;
 #endif
-  mat4 g = lightImages[e.imageBegin + image].isometry;
-  float d = geodesicDistance(x, lightImages[e.imageBegin + image].center);
+  mat4 g = lightImages[e.image_begin + image].isometry;
+  float d = geodesicDistance(x, lightImages[e.image_begin + image].center);
 #if defined(HAS_SPHERE_EMITTERS)
   if (e.kind == EMITTER_SPHERE && sphereSurrounds(e, d)) branch = 0u;  // sampled on branch 0
 #endif

@@ -19,7 +19,7 @@ float faceReachedAt[32];
 // `towards` per unit of chart parameter.
 void noteFaceReach(Cell c, uint i, float height, float towards) {
   if (i >= 32u) return;
-  float beyond = height - c.tubeReach;
+  float beyond = height - c.tube_reach;
   faceReachedAt[i] = beyond <= 0.0 ? 0.0 : towards > 0.0 ? beyond / towards : FAR;
 }
 
@@ -28,7 +28,7 @@ void noteFaceReach(Cell c, uint i, float height, float towards) {
 // (near_faces in server/render/tube_culling.h).
 uint nearFaces(Cell c, float sMax) {
   uint near = 0u;
-  for (uint i = 0u; i < min(c.faceCount, 32u); ++i)
+  for (uint i = 0u; i < min(c.face_count, 32u); ++i)
     if (faceReachedAt[i] <= sMax) near |= 1u << i;
   return near;
 }
@@ -47,18 +47,18 @@ void testTube(uint i, vec3 o, vec3 d, float sMax, inout ChartHit hit) {
 ChartHit nearestTube(uint cell, vec3 o, vec3 d, float sMax, bool anyHit) {
   ChartHit hit = noChartHit();
   Cell c = cells[cell];
-  if (c.tubeCount == 0u) return hit;
+  if (c.tube_count == 0u) return hit;
   uint near = nearFaces(c, sMax);
   for (uint pending = near; pending != 0u; pending &= pending - 1u) {
-    uint range = cellFaces[c.faceBegin + uint(findLSB(pending))].tubes;
-    uint first = c.tubeBegin + (range & 0xFFFFu);
+    uint range = cellFaces[c.face_begin + uint(findLSB(pending))].tubes;
+    uint first = c.tube_begin + (range & 0xFFFFu);
     for (uint i = first; i < first + (range >> 16); ++i) {
-      if (((near >> tubes[i].faceB) & 1u) == 0u) continue;
+      if (((near >> tubes[i].face_b) & 1u) == 0u) continue;
       testTube(i, o, d, sMax, hit);
       if (anyHit && hit.kind != 0u) return hit;
     }
   }
-  for (uint i = c.tubeBegin + c.alwaysBegin; i < c.tubeBegin + c.tubeCount; ++i) {
+  for (uint i = c.tube_begin + c.always_begin; i < c.tube_begin + c.tube_count; ++i) {
     testTube(i, o, d, sMax, hit);
     if (anyHit && hit.kind != 0u) return hit;
   }

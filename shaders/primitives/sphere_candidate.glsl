@@ -24,7 +24,7 @@ bool sphereCandidate(SphereRef ref, vec4 p, vec4 v, float sMin, float sMax, out 
 ChartHit nearestListedSphere(uint cell, vec4 p, vec4 v, float sMax, bool anyHit) {
   ChartHit best = noChartHit();
   Cell c = cells[cell];
-  for (uint i = c.sphereBegin; i < c.sphereBegin + c.sphereCount; ++i) {
+  for (uint i = c.sphere_begin; i < c.sphere_begin + c.sphere_count; ++i) {
     float s, t;
     if (!sphereCandidate(sphereRefs[i], p, v, 0.0, min(sMax, best.s), s, t)) continue;
     best = ChartHit(2u, sphereRefs[i].sphere, s, t, vec2(0.0));

@@ -102,7 +102,7 @@ Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
   s = chartSurface(ray, x, planeNormal, dot(planeNormal, a), hit.s);
   TriangleInfo info = triangles[hit.index];
 #if defined(HAS_SMOOTH_NORMALS)
-  if (info.smoothNormals != 0u) {  // E3 meshes only: model tangents per vertex
+  if (info.smooth_normals != 0u) {  // E3 meshes only: model tangents per vertex
     vec4 n = w * normals[i0] + hit.barycentrics.x * normals[i1] + hit.barycentrics.y * normals[i2];
     if (dot(n, n) > 0.0) s.normal = normalizeTangent(s.position, n);
   }

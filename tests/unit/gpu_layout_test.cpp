@@ -1,9 +1,10 @@
-// The host's GPU-visible structs and binding numbers against the layout the shader compiler
-// gives the shaders: ray_query.comp is compiled with every feature, its SPIR-V read for each
-// struct's member offsets, member types and array stride and for each block's binding, and
-// compared with offsetof / decltype / sizeof of render/packed_scene.h, emitters.h and
-// frame_uniforms.h and with the binding numbers of shaders/common/bindings.h. A member added, reordered or retyped on one side only,
-// or a binding renumbered in one place, fails here instead of in a pipeline.
+// The GPU-visible structs (shaders/common/gpu_types.h) and binding numbers (bindings.h), which
+// host and shaders compile from one definition, against the layout the shader compiler gives
+// them: ray_query.comp is compiled with every feature, its SPIR-V read for each struct's member
+// offsets, member types and array stride and for each block's binding, and compared with the
+// host's offsetof / decltype / sizeof and binding numbers. A member whose C++ layout differs
+// from std430 / std140 (a vec3, a scalar before a vec4, a size not a multiple of 16), or a
+// block bound at another number than the host binds, fails here instead of in a pipeline.
 #include <gtest/gtest.h>
 
 #include <cstddef>
@@ -115,13 +116,13 @@ TEST(GpuLayout, EveryHostStructHasItsShaderStructsOffsetsAndStride) {
        sizeof(GpuMaterial)},
       {"Sphere",
        {AT(GpuSphere, center), AT(GpuSphere, radius), AT(GpuSphere, material),
-        AT(GpuSphere, emitter), AT(GpuSphere, padding)},
+        AT(GpuSphere, emitter), AT(GpuSphere, pad0)},
        sizeof(GpuSphere)},
       {"SphereRef", {AT(GpuSphereRef, sphere), AT(GpuSphereRef, cell)}, sizeof(GpuSphereRef)},
       {"PointLight", {AT(GpuPointLight, position), AT(GpuPointLight, intensity)},
        sizeof(GpuPointLight)},
       {"TriangleInfo",
-       {AT(GpuTriangle, material), AT(GpuTriangle, smooth), AT(GpuTriangle, cell),
+       {AT(GpuTriangle, material), AT(GpuTriangle, smooth_normals), AT(GpuTriangle, cell),
         AT(GpuTriangle, emitter)},
        sizeof(GpuTriangle)},
       {"Emitter",
@@ -129,8 +130,7 @@ TEST(GpuLayout, EveryHostStructHasItsShaderStructsOffsetsAndStride) {
         AT(GpuEmitter, edge2), AT(GpuEmitter, radiance), AT(GpuEmitter, kind),
         AT(GpuEmitter, radius), AT(GpuEmitter, pmf), AT(GpuEmitter, cdf),
         AT(GpuEmitter, image_begin), AT(GpuEmitter, image_count),
-        Member{uint32_t(offsetof(GpuEmitter, padding)), "uint"},  // uint32_t[2]: pad0, pad1
-        Member{uint32_t(offsetof(GpuEmitter, padding)) + 4, "uint"}},
+        AT(GpuEmitter, pad0), AT(GpuEmitter, pad1)},
        sizeof(GpuEmitter)},
       {"LightImage", {AT(GpuLightImage, isometry), AT(GpuLightImage, center)},
        sizeof(GpuLightImage)},
@@ -141,7 +141,7 @@ TEST(GpuLayout, EveryHostStructHasItsShaderStructsOffsetsAndStride) {
        sizeof(GpuCell)},
       {"Tube",
        {AT(GpuTube, a), AT(GpuTube, b), AT(GpuTube, material), AT(GpuTube, face_a),
-        AT(GpuTube, face_b), AT(GpuTube, padding)},
+        AT(GpuTube, face_b), AT(GpuTube, pad0)},
        sizeof(GpuTube)},
       {"CellFace",
        {AT(GpuCellFace, plane), AT(GpuCellFace, pairing), AT(GpuCellFace, target_cell),
@@ -156,7 +156,7 @@ TEST(GpuLayout, EveryHostStructHasItsShaderStructsOffsetsAndStride) {
     EXPECT_EQ(shader.strides.at(e.glsl), e.size);
   }
   // The uniform block (std140) and the push constants.
-  EXPECT_EQ(shader.structs.at("Frame"),
+  EXPECT_EQ(shader.structs.at("FrameUniforms"),
             (std::vector<Member>{
                 AT(FrameUniforms, camera_pose), AT(FrameUniforms, ambient_light),
                 AT(FrameUniforms, tan_half_fov_y), AT(FrameUniforms, aspect),
@@ -165,9 +165,9 @@ TEST(GpuLayout, EveryHostStructHasItsShaderStructsOffsetsAndStride) {
                 AT(FrameUniforms, russian_roulette), AT(FrameUniforms, max_crossings),
                 AT(FrameUniforms, camera_cell), AT(FrameUniforms, lighting),
                 AT(FrameUniforms, light_sampling), AT(FrameUniforms, emitter_count),
-                AT(FrameUniforms, light_cutoff), AT(FrameUniforms, clamp),
-                AT(FrameUniforms, padding)}));
-  EXPECT_EQ(shader.structs.at("Push"),
+                AT(FrameUniforms, light_cutoff), AT(FrameUniforms, clamp_luminance),
+                AT(FrameUniforms, pad0)}));
+  EXPECT_EQ(shader.structs.at("SampleRange"),
             (std::vector<Member>{AT(SampleRange, start), AT(SampleRange, count),
                                    AT(SampleRange, column_offset), AT(SampleRange, row_offset),
                                    AT(SampleRange, column_count), AT(SampleRange, row_count)}));

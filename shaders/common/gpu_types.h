@@ -1,0 +1,163 @@
+// Every struct the host writes and the shaders read: the one definition, compiled by the
+// shaders (common/scene_data.glsl, std430 buffers, the std140 frame block, the push constants)
+// and by the host (server/render/packed_scene.h, emitters.h, frame_uniforms.h: namespace
+// geodesic::gpu, with vec4 / mat4 / uint as std::array<float, 4> / std::array<float, 16>
+// column-major / uint32_t). Members are laid out so that C++ and std430/std140 agree (vec4s
+// first, scalars after, padded to 16 bytes); tests/unit/gpu_layout_test.cpp holds each
+// member's offset and each array's stride to what the shader compiler gives. Member names
+// avoid GLSL's keywords and built-ins (smooth, clamp, sample).
+#ifndef GEODESIC_GPU_TYPES_H
+#define GEODESIC_GPU_TYPES_H
+
+#ifdef __cplusplus
+#include <array>
+#include <cstdint>
+namespace geodesic::gpu {
+using vec4 = std::array<float, 4>;
+using mat4 = std::array<float, 16>;  // column-major
+using uint = std::uint32_t;
+#endif
+
+struct Material {
+  vec4 ambient;       // rgb: k_a
+  vec4 diffuse;       // rgb: k_d
+  vec4 specular;      // rgb: k_s, w: shininess k_e
+  vec4 mirror;        // rgb
+  vec4 transmission;  // rgb: dielectric lobe weight, w: index of refraction
+  vec4 emission;      // rgb: L_e
+};
+
+struct Sphere {
+  vec4 center;    // model point
+  float radius;   // geodesic
+  uint material;
+  uint emitter;   // index into the emitters, ~0u when it does not emit
+  uint pad0;
+};
+
+// One sphere's bounding box in one cell's acceleration structure.
+struct SphereRef {
+  uint sphere;
+  uint cell;
+};
+
+// The paper model's point lights.
+struct PointLight {
+  vec4 position;  // model point
+  vec4 intensity;
+};
+
+struct TriangleInfo {
+  uint material;
+  uint smooth_normals;  // 1 when the mesh supplies per-vertex normals (E3)
+  uint cell;
+  uint emitter;  // index into the emitters, ~0u when it does not emit
+};
+
+// A light source of the physical model (server/render/emitters.h).
+struct Emitter {
+  vec4 center;    // model point: the light, the sphere's centre or the triangle's centroid
+  vec4 corner;    // triangle: first corner and two edges in the chart around the centroid
+  vec4 edge1;
+  vec4 edge2;
+  vec4 radiance;  // rgb: intensity (point) or emitted radiance; w: model area
+  uint kind;      // EmitterKind: 0 point, 1 sphere, 2 triangle
+  float radius;   // sphere: geodesic radius; triangle: centroid to farthest corner
+  float pmf;      // probability of choosing this emitter
+  float cdf;      // sum of pmf up to and including this one
+  uint image_begin;  // its images: light images [image_begin, image_begin + image_count)
+  uint image_count;
+  uint pad0;
+  uint pad1;
+};
+
+// One image of an emitter under the group: the isometry (of the universal cover) and the
+// emitter's centre carried by it, computed in double: all that light sampling reads of every
+// image at every shading point.
+struct LightImage {
+  mat4 isometry;
+  vec4 center;
+};
+
+// A cell of the chart atlas (server/render/cells.h).
+struct Cell {
+  mat4 chart_isometry;  // model -> the cell's frame
+  uint face_begin;
+  uint face_count;
+  uint tube_begin;  // its edge tubes: tubes [tube_begin, tube_begin + tube_count)
+  uint tube_count;
+  float tube_reach;  // the largest radius among them
+  // Its tubes sorted by their first face (CellFace.tubes), then those always tested:
+  // tubes [tube_begin + always_begin, tube_begin + tube_count).
+  uint always_begin;
+  // Its sphere refs, sphere refs [sphere_begin, sphere_begin + sphere_count) (SPHERE_LIST).
+  uint sphere_begin;
+  uint sphere_count;
+};
+
+// An edge tube: a capsule in its cell's chart (geometry/capsule.h, scene.h EdgeTube) and two
+// local faces whose planes hold its axis (server/render/tube_culling.h; ~0u: always tested).
+struct Tube {
+  vec4 a;  // xyz: one end of the axis; w: chart radius
+  vec4 b;  // xyz: the other end
+  uint material;
+  uint face_a;
+  uint face_b;
+  uint pad0;
+};
+
+struct CellFace {
+  vec4 plane;    // xyz: outward unit normal in the cell's chart, w: offset (N . X = w)
+  mat4 pairing;  // applied to a ray leaving through the face
+  uint target_cell;
+  uint partner;   // the face entered through
+  uint internal;  // 1: a wall between pieces of one domain (not a crossing of MAX_CROSSINGS)
+  uint tubes;     // the cell's tubes whose first face this is: local offset | count << 16
+};
+
+// The per-render uniform block (std140).
+struct FrameUniforms {
+  mat4 camera_pose;    // camera frame -> model isometry
+  vec4 ambient_light;  // L_a
+  float tan_half_fov_y;
+  float aspect;
+  uint width;
+  uint height;
+  uint max_depth;
+  uint light_count;
+  uint seed;
+  uint russian_roulette;  // 0 or 1
+  uint max_crossings;     // cell faces a ray may cross
+  uint camera_cell;
+  uint lighting;        // 0 paper, 1 physical (LightingModel)
+  uint light_sampling;  // LightSampling: 0 MIS, 1 BSDF sampling alone, 2 light sampling alone
+  uint emitter_count;
+  float light_cutoff;     // geodesic distance (1e30: none)
+  float clamp_luminance;  // largest sample luminance; 0: no clamp
+  uint pad0;
+};
+
+// Which samples one dispatch adds, [start, start + count), to which pixels: a rectangle of
+// column_count x row_count from (column_offset, row_offset) (the push constants). A pass over
+// a large image is split into slices (render/pass_slicer.h) so that the render thread can turn
+// to a camera move or another session in between.
+struct SampleRange {
+  uint start;
+  uint count;
+  uint column_offset;
+  uint row_offset;
+  uint column_count;
+  uint row_count;
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(Material) == 96 && sizeof(Sphere) == 32 && sizeof(SphereRef) == 8 &&
+              sizeof(PointLight) == 32 && sizeof(TriangleInfo) == 16 && sizeof(Emitter) == 112 &&
+              sizeof(LightImage) == 80 && sizeof(Cell) == 96 && sizeof(Tube) == 48 &&
+              sizeof(CellFace) == 96 && sizeof(FrameUniforms) == 144 &&
+              sizeof(SampleRange) == 24,
+              "a 16-byte multiple for every array element, std140's for the frame");
+}  // namespace geodesic::gpu
+#endif
+
+#endif
