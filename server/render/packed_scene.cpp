@@ -96,8 +96,10 @@ void pack_cell_spheres(const Scene& scene, const Cell& cell, uint32_t cell_index
 // The edge tubes in the cell's chart: their ends mapped there, the chart radius kept (exact for
 // a domain charted about the origin in one cell, as every bundled quotient is; a domain charted
 // in pieces bends a tube's surface where it changes chart by a fraction of its radius). Sorted
-// by the first of the two faces that hold the axis, each face given its range, those without
-// such faces last (render/tube_culling.h). Fills the cell's tube fields.
+// by the two faces that hold the axis, each first face given its offset and the set of second
+// faces, so that a segment finds the tube on a pair of near faces at once; a tube without two
+// such faces, or on a pair that already has one, goes last, always tested
+// (render/tube_culling.h). Fills the cell's tube fields.
 void pack_cell_tubes(const Scene& scene, const Cell& cell, GpuCell& packed, PackedScene& out) {
   const GeometryKind k = scene.geometry;
   std::vector<GpuTube> tubes;
@@ -110,8 +112,15 @@ void pack_cell_tubes(const Scene& scene, const Cell& cell, GpuCell& packed, Pack
                      tube.material, face_a, face_b, 0});
     packed.tube_reach = std::max(packed.tube_reach, float(tube.radius));
   }
-  std::stable_sort(tubes.begin(), tubes.end(),
-                   [](const GpuTube& x, const GpuTube& y) { return x.face_a < y.face_a; });
+  std::stable_sort(tubes.begin(), tubes.end(), [](const GpuTube& x, const GpuTube& y) {
+    return std::pair(x.face_a, x.face_b) < std::pair(y.face_a, y.face_b);
+  });
+  for (size_t i = 1; i < tubes.size(); ++i)  // a second tube on one pair: always tested
+    if (tubes[i].face_a != kAlwaysTest && tubes[i].face_a == tubes[i - 1].face_a &&
+        tubes[i].face_b == tubes[i - 1].face_b)
+      tubes[i].face_a = tubes[i].face_b = kAlwaysTest;
+  std::stable_partition(tubes.begin(), tubes.end(),
+                        [](const GpuTube& t) { return t.face_a != kAlwaysTest; });
   if (tubes.size() > 0xFFFF) throw SceneError("more than 65535 edge tubes in one cell");
   packed.tube_begin = uint32_t(out.tubes.size());
   packed.tube_count = uint32_t(tubes.size());
@@ -121,9 +130,9 @@ void pack_cell_tubes(const Scene& scene, const Cell& cell, GpuCell& packed, Pack
       packed.always_begin = std::min(packed.always_begin, i);
       continue;
     }
-    uint32_t& range = out.faces[cell.face_begin + tubes[i].face_a].tubes;
-    if (range == 0) range = i;
-    range += 1u << 16;
+    GpuCellFace& face = out.faces[cell.face_begin + tubes[i].face_a];
+    if (face.tube_partners == 0) face.tubes = i;
+    face.tube_partners |= 1u << tubes[i].face_b;
   }
   out.tubes.insert(out.tubes.end(), tubes.begin(), tubes.end());
 }

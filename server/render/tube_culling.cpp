@@ -1,6 +1,7 @@
 #include "render/tube_culling.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace geodesic {
@@ -26,6 +27,21 @@ std::pair<uint32_t, uint32_t> faces_holding(const Cell& cell, const Vec3& a, con
   }
   if (holding.size() < 2) return {kAlwaysTest, kAlwaysTest};
   return {holding[0], holding[1]};
+}
+
+std::vector<uint32_t> tubes_to_test(const gpu::Cell& cell, std::span<const gpu::CellFace> faces,
+                                    uint32_t near) {
+  std::vector<uint32_t> tested;
+  for (uint32_t pending = near; pending != 0; pending &= pending - 1) {
+    const gpu::CellFace& face = faces[cell.face_begin + std::countr_zero(pending)];
+    for (uint32_t pairs = face.tube_partners & near; pairs != 0; pairs &= pairs - 1) {
+      const uint32_t below = (1u << std::countr_zero(pairs)) - 1;
+      tested.push_back(cell.tube_begin + face.tubes + std::popcount(face.tube_partners & below));
+    }
+  }
+  for (uint32_t i = cell.always_begin; i < cell.tube_count; ++i)
+    tested.push_back(cell.tube_begin + i);
+  return tested;
 }
 
 }  // namespace geodesic

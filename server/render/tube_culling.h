@@ -5,12 +5,15 @@
 // h(s) = delta - n . (o + s d) is linear, smallest at an end: a face is near when that smallest
 // value is at most the cell's largest tube radius, and a tube can be met only when both of its
 // faces are near. A segment that enters by one face and leaves by another, far from the other
-// edges, so tests one tube or none instead of all of them.
+// edges, so tests one tube or none instead of all of them, found from the pair of faces without
+// reading the cell's other tubes.
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
+#include "common/gpu_types.h"
 #include "render/cells.h"
 
 namespace geodesic {
@@ -29,5 +32,12 @@ std::pair<uint32_t, uint32_t> faces_holding(const Cell& cell, const Vec3& a, con
 constexpr bool tube_may_meet(uint32_t near, uint32_t face_a, uint32_t face_b) {
   return face_a >= 32 || face_b >= 32 || ((near >> face_a) & (near >> face_b) & 1u) != 0;
 }
+
+// The packed cell's tubes (indices into the packed tube array) that nearestTube tests for a
+// segment whose near faces are `near` (bits below the cell's face count): for each near face,
+// the tube on each of its pairs with another near face, found from the face's tube_partners
+// (gpu_types.h CellFace), then those always tested; the order is the shader's.
+std::vector<uint32_t> tubes_to_test(const gpu::Cell& cell, std::span<const gpu::CellFace> faces,
+                                    uint32_t near);
 
 }  // namespace geodesic

@@ -112,7 +112,15 @@ struct CellFace {
   uint target_cell;
   uint partner;   // the face entered through
   uint internal;  // 1: a wall between pieces of one domain (not a crossing of MAX_CROSSINGS)
-  uint tubes;     // the cell's tubes whose first face this is: local offset | count << 16
+  // The cell's tubes whose first face this is, one per second face, in the order of their
+  // second faces from local offset `tubes`; bit j of `tube_partners` set when one has second
+  // face j (server/render/tube_culling.h): the tube on faces (this, j) is at `tubes` plus the
+  // bits of tube_partners below j.
+  uint tubes;
+  uint tube_partners;
+  uint pad0;
+  uint pad1;
+  uint pad2;
 };
 
 // The per-render uniform block (std140).
@@ -154,7 +162,7 @@ struct SampleRange {
 static_assert(sizeof(Material) == 96 && sizeof(Sphere) == 32 && sizeof(SphereRef) == 8 &&
               sizeof(PointLight) == 32 && sizeof(TriangleInfo) == 16 && sizeof(Emitter) == 112 &&
               sizeof(LightImage) == 80 && sizeof(Cell) == 96 && sizeof(Tube) == 48 &&
-              sizeof(CellFace) == 96 && sizeof(FrameUniforms) == 144 &&
+              sizeof(CellFace) == 112 && sizeof(FrameUniforms) == 144 &&
               sizeof(SampleRange) == 24,
               "a 16-byte multiple for every array element, std140's for the frame");
 }  // namespace geodesic::gpu

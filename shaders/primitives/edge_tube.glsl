@@ -41,20 +41,20 @@ void testTube(uint i, vec3 o, vec3 d, float sMax, inout ChartHit hit) {
 }
 
 // The nearest tube of the cell on o + s d, s in (0, sMax] (for a shadow ray any tube);
-// kind 3 and the tube's index, or no hit. Only tubes both of whose faces are near are tested:
-// for each near face, its tubes (those it is the first face of) whose second face is near too.
-// The faces' reach is that noteFaceReach noted for this line.
+// kind 3 and the tube's index, or no hit. Only tubes both of whose faces are near are tested,
+// each found from its pair of faces without reading the others (CellFace.tube_partners). The
+// faces' reach is that noteFaceReach noted for this line.
 ChartHit nearestTube(uint cell, vec3 o, vec3 d, float sMax, bool anyHit) {
   ChartHit hit = noChartHit();
   Cell c = cells[cell];
   if (c.tube_count == 0u) return hit;
   uint near = nearFaces(c, sMax);
   for (uint pending = near; pending != 0u; pending &= pending - 1u) {
-    uint range = cellFaces[c.face_begin + uint(findLSB(pending))].tubes;
-    uint first = c.tube_begin + (range & 0xFFFFu);
-    for (uint i = first; i < first + (range >> 16); ++i) {
-      if (((near >> tubes[i].face_b) & 1u) == 0u) continue;
-      testTube(i, o, d, sMax, hit);
+    CellFace face = cellFaces[c.face_begin + uint(findLSB(pending))];
+    for (uint pairs = face.tube_partners & near; pairs != 0u; pairs &= pairs - 1u) {
+      uint below = (1u << uint(findLSB(pairs))) - 1u;
+      testTube(c.tube_begin + face.tubes + uint(bitCount(face.tube_partners & below)), o, d,
+               sMax, hit);
       if (anyHit && hit.kind != 0u) return hit;
     }
   }

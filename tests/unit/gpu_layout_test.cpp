@@ -145,7 +145,9 @@ TEST(GpuLayout, EveryHostStructHasItsShaderStructsOffsetsAndStride) {
        sizeof(GpuTube)},
       {"CellFace",
        {AT(GpuCellFace, plane), AT(GpuCellFace, pairing), AT(GpuCellFace, target_cell),
-        AT(GpuCellFace, partner), AT(GpuCellFace, internal), AT(GpuCellFace, tubes)},
+        AT(GpuCellFace, partner), AT(GpuCellFace, internal), AT(GpuCellFace, tubes),
+        AT(GpuCellFace, tube_partners), AT(GpuCellFace, pad0), AT(GpuCellFace, pad1),
+        AT(GpuCellFace, pad2)},
        sizeof(GpuCellFace)},
   };
   for (const Expected& e : structs) {

@@ -1,9 +1,12 @@
 // Edge-tube culling (render/tube_culling.h): in every bundled quotient scene with edge tubes,
-// each tube finds the two faces that hold its axis, and no chart segment that meets a tube
+// each tube finds the two faces that hold its axis, the shader's lookup by pairs of near faces
+// (tubes_to_test) finds exactly the tubes on such pairs, and no chart segment that meets a tube
 // has it culled. Segments run face to face through the domain, most of them starting beside
 // an edge, where the tubes are.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -49,11 +52,20 @@ TEST_P(TubeCulling, EveryTubeHasItsTwoFacesAndNoMetTubeIsCulled) {
     ASSERT_LT(t.face_a, t.face_b);
     ASSERT_LT(t.face_b, cell.faces.size());
   }
-  // Each face's range holds exactly the tubes it is the first face of.
+  // Each face's tubes are those it is the first face of, one per second face, found where
+  // its tube_partners bits say.
   for (uint32_t f = 0; f < cell.faces.size(); ++f) {
-    const uint32_t range = packed.faces[f].tubes;
-    for (uint32_t i = range & 0xFFFF; i < (range & 0xFFFF) + (range >> 16); ++i)
-      EXPECT_EQ(packed.tubes[i].face_a, f);
+    const uint32_t partners = packed.faces[f].tube_partners;
+    EXPECT_EQ(std::count_if(packed.tubes.begin(), packed.tubes.end(),
+                            [&](const GpuTube& t) { return t.face_a == f; }),
+              std::popcount(partners));
+    for (uint32_t j = 0; j < 32; ++j)
+      if ((partners >> j) & 1u) {
+        const GpuTube& t =
+            packed.tubes[packed.faces[f].tubes + std::popcount(partners & ((1u << j) - 1))];
+        EXPECT_EQ(t.face_a, f);
+        EXPECT_EQ(t.face_b, j);
+      }
   }
   const Polyhedron& domain = scene.manifold.domain;
   Vec3 centroid;
@@ -73,10 +85,15 @@ TEST_P(TubeCulling, EveryTubeHasItsTwoFacesAndNoMetTubeIsCulled) {
     const Vec3 o = inside + face_parameter(cell, inside, d, false) * d;
     const double s_max = face_parameter(cell, o, d, true);
     const uint32_t near = near_faces(cell, o, d, s_max, packed.cells[0].tube_reach);
-    for (const GpuTube& t : packed.tubes) {
-      const Capsule c{{t.a[0], t.a[1], t.a[2]}, {t.b[0], t.b[1], t.b[2]}, t.a[3]};
+    // The shader's lookup finds exactly the tubes on pairs of near faces, and no tube the
+    // segment meets is left out.
+    const std::vector<uint32_t> found = tubes_to_test(packed.cells[0], packed.faces, near);
+    tested += double(found.size());
+    for (uint32_t i = 0; i < packed.tubes.size(); ++i) {
+      const GpuTube& t = packed.tubes[i];
       const bool may = tube_may_meet(near, t.face_a, t.face_b);
-      tested += may;
+      ASSERT_EQ(std::count(found.begin(), found.end(), i), may ? 1 : 0) << "tube " << i;
+      const Capsule c{{t.a[0], t.a[1], t.a[2]}, {t.b[0], t.b[1], t.b[2]}, t.a[3]};
       if (std::isinf(intersect_capsule(c, o, d, 0, s_max))) continue;
       ++met;
       ASSERT_TRUE(may) << "segment " << n << " meets a tube held by faces " << t.face_a << ", "
@@ -87,6 +104,25 @@ TEST_P(TubeCulling, EveryTubeHasItsTwoFacesAndNoMetTubeIsCulled) {
               GetParam().c_str(), packed.tubes.size(), tested / kSegments, met, kSegments);
   EXPECT_GT(met, kSegments / 20);
   EXPECT_LT(tested / kSegments, 0.25 * double(packed.tubes.size()));
+}
+
+// Two tubes on one edge (a document that asks for the domain's edges twice): the lookup finds
+// one per pair of faces, so the second of each goes to the tubes always tested, and every tube
+// is still tested where it can be met.
+TEST(TubeCulling, ASecondTubeOnOneEdgeIsAlwaysTested) {
+  Scene scene = load_scene_file(std::filesystem::path(GEODESIC_SOURCE_DIR) /
+                                "scenes/mirrored-dodecahedron.json");
+  const size_t edges = scene.tubes.size();
+  scene.tubes.insert(scene.tubes.end(), scene.tubes.begin(), scene.tubes.end());
+  const PackedScene packed = pack_scene(scene);
+  ASSERT_EQ(packed.tubes.size(), 2 * edges);
+  EXPECT_EQ(packed.cells[0].always_begin, edges);
+  for (size_t i = edges; i < packed.tubes.size(); ++i)
+    EXPECT_EQ(packed.tubes[i].face_a, kAlwaysTest);
+  const uint32_t every_face = (1u << packed.cells[0].face_count) - 1;
+  const std::vector<uint32_t> all = tubes_to_test(packed.cells[0], packed.faces, every_face);
+  EXPECT_EQ(all.size(), 2 * edges);  // every face near: each tube once
+  EXPECT_EQ(tubes_to_test(packed.cells[0], packed.faces, 0).size(), edges);  // the always ones
 }
 
 INSTANTIATE_TEST_SUITE_P(
