@@ -84,6 +84,7 @@ PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
                   std::all_of(packed.cells.begin(), packed.cells.end(), [](const GpuCell& c) {
                     return c.sphere_count <= kSphereListLength;
                   });
+  f.single_cell = f.crossing != Crossing::None && packed.cells.size() == 1;
   f.smooth_normals = std::any_of(packed.triangles.begin(), packed.triangles.end(),
                                  [](const GpuTriangle& t) { return t.smooth_normals != 0; });
   f.paper = scene.render.lighting == LightingModel::Paper;
@@ -141,6 +142,7 @@ std::vector<std::string> PipelineFeatures::defines() const {
   flag(triangles, "HAS_TRIANGLES");
   flag(tubes && crossing != Crossing::None, "HAS_TUBES");
   flag(sphere_list, "SPHERE_LIST");
+  flag(single_cell, "SINGLE_CELL");
   flag(smooth_normals, "HAS_SMOOTH_NORMALS");
   flag(paper, "LIGHTING_PAPER");
   flag(physical, "LIGHTING_PHYSICAL");
@@ -197,6 +199,7 @@ std::string PipelineFeatures::summary() const {
   word(triangles, "triangles");
   word(tubes, "tubes");
   word(sphere_list, "sphere-list");
+  word(single_cell, "one-cell");
   word(smooth_normals, "smooth-normals");
   word(true, paper ? "paper" : "physical");
   word(point_lights, paper ? "point-lights(" + std::to_string(point_light_count) + ")"

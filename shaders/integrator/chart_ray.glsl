@@ -41,6 +41,18 @@ struct ChartHit {
 
 ChartHit noChartHit() { return ChartHit(0u, 0u, FAR, FAR, vec2(0.0)); }
 
+#if defined(CELL_CROSSING) || defined(MULTIPLE_CHARTS)
+// A cell's record. In a space of one cell (SINGLE_CELL) every ray reads the same one, at an
+// index the compiler sees is the same for all: one load for a SIMD group, not a gather.
+Cell cellRecord(uint cell) {
+#if defined(SINGLE_CELL)
+  return cells[0u];
+#else
+  return cells[cell];
+#endif
+}
+#endif
+
 // Model -> cell frame. Only S3's atlas changes charts between cells; other spaces have one
 // cell charted about the origin, so the identity compiles away there.
 mat4 cellChartIsometry(uint cell) {

@@ -39,7 +39,7 @@ ChartLine chartLineOf(GeodesicRay ray) {
 uint exitFace(GeodesicRay ray, ChartLine line, out float sExit) {
   sExit = FAR;
   uint face = NO_FACE;
-  Cell cell = cells[ray.cell];
+  Cell cell = cellRecord(ray.cell);
   for (uint i = 0u; i < cell.face_count; ++i) {
     uint f = cell.face_begin + i;
     vec4 plane = cellFaces[f].plane;

@@ -46,7 +46,7 @@ void testTube(uint i, vec3 o, vec3 d, float sMax, inout ChartHit hit) {
 // faces' reach is that noteFaceReach noted for this line.
 ChartHit nearestTube(uint cell, vec3 o, vec3 d, float sMax, bool anyHit) {
   ChartHit hit = noChartHit();
-  Cell c = cells[cell];
+  Cell c = cellRecord(cell);
   if (c.tube_count == 0u) return hit;
   uint near = nearFaces(c, sMax);
   for (uint pending = near; pending != 0u; pending &= pending - 1u) {

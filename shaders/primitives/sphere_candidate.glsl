@@ -23,7 +23,7 @@ bool sphereCandidate(SphereRef ref, vec4 p, vec4 v, float sMin, float sMax, out 
 // alone (server/render/pipeline_features.h sphere_list) needs no acceleration structure.
 ChartHit nearestListedSphere(uint cell, vec4 p, vec4 v, float sMax, bool anyHit) {
   ChartHit best = noChartHit();
-  Cell c = cells[cell];
+  Cell c = cellRecord(cell);
   for (uint i = c.sphere_begin; i < c.sphere_begin + c.sphere_count; ++i) {
     float s, t;
     if (!sphereCandidate(sphereRefs[i], p, v, 0.0, min(sMax, best.s), s, t)) continue;

@@ -121,6 +121,27 @@ TEST(PipelineFeatures, EachBundledSceneGetsItsPairingKindAndPrimitives) {
   }
 }
 
+// A space of one cell with faces reads its cell at a uniform index (SINGLE_CELL); an atlas of
+// cells (S3 charted in pieces) and a space without faces do not.
+TEST(PipelineFeatures, SpacesOfOneCellReadItAtAUniformIndex) {
+  const auto single = [](const char* name) {
+    const Scene scene = bundled(name);
+    const PackedScene packed = pack_scene(scene);
+    const PipelineFeatures f = scene_features(scene, packed);
+    const auto defines = f.defines();
+    EXPECT_EQ(std::find(defines.begin(), defines.end(), "SINGLE_CELL") != defines.end(),
+              f.single_cell) << name;
+    EXPECT_EQ(f.single_cell, f.crossing != Crossing::None && packed.cells.size() == 1) << name;
+    return f.single_cell;
+  };
+  for (const char* name : {"mirrored-dodecahedron", "seifert-weber", "poincare-sphere",
+                           "torus-cornell", "quarter-turn-space"})
+    EXPECT_TRUE(single(name)) << name;
+  for (const char* name : {"spherical-spheres", "cornell-box", "hyperbolic-spheres"})
+    EXPECT_FALSE(single(name)) << name;
+  EXPECT_FALSE(all_features(GeometryKind::Hyperbolic).single_cell);
+}
+
 // Segments test their cell's spheres one by one where the cells have faces and hold spheres
 // alone, at most kSphereListLength each; the acceleration structure traces the rest.
 // (SpecialisedPipelines.EveryBundledSceneRendersAsWithAllFeatures holds the images: the
