@@ -35,25 +35,29 @@ ChartLine chartLineOf(GeodesicRay ray) {
 #if defined(CELL_CROSSING)
 // Where the chart line leaves its convex cell: the smallest chart parameter over the faces it
 // moves towards (NO_FACE and FAR for a cell without faces). With edge tubes, the same pass over
-// the faces notes where the line comes within the tubes' reach of each (faceReachedAt).
+// the faces notes which the line comes within the tubes' reach of (noteFaceReach).
 uint exitFace(GeodesicRay ray, ChartLine line, out float sExit) {
   sExit = FAR;
   uint face = NO_FACE;
   Cell cell = cellRecord(ray.cell);
+#if defined(HAS_TUBES)
+  clearFaceReach();
+#endif
   for (uint i = 0u; i < cell.face_count; ++i) {
     uint f = cell.face_begin + i;
     vec4 plane = cellFaces[f].plane;
     float towards = dot(plane.xyz, line.d);
     float height = plane.w - dot(plane.xyz, line.o);  // above the face's plane, inside
-#if defined(HAS_TUBES)
-    noteFaceReach(cell, i, height, towards);
-#endif
-    if (f == ray.enteredFace || towards <= 0.0) continue;
-    float s = max(0.0, height / towards);
-    if (s < sExit) {
-      sExit = s;
-      face = f;
+    if (f != ray.enteredFace && towards > 0.0) {
+      float s = max(0.0, height / towards);
+      if (s < sExit) {
+        sExit = s;
+        face = f;
+      }
     }
+#if defined(HAS_TUBES)
+    noteFaceReach(cell, i, height, towards, sExit);
+#endif
   }
   return face;
 }

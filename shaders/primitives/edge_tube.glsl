@@ -9,27 +9,35 @@
 #if defined(HAS_TUBES)
 #include "geometry/capsule.glsl"
 
-// The chart parameter from which the current chart line lies within the cell's tube reach of
-// its local face i (i < 32): 0 when it starts there, FAR when it never comes so near. The
-// tracer's pass over the faces fills it (noteFaceReach) for nearFaces, which then reads no
-// plane again.
-float faceReachedAt[32];
+// Which of the cell's local faces (i < 32) the current chart line comes within the cell's
+// tube reach of, as the tracer's pass over the faces (exitFace) sees them: those it starts
+// near, and those it moves towards and reaches before the exit found so far, which may be
+// nearer once the pass ends (nearFaces checks them again against the segment's end).
+uint nearAtStart = 0u, nearAhead = 0u;
 
-// Face i's plane lies `height` above the line's start and the line approaches it at rate
-// `towards` per unit of chart parameter.
-void noteFaceReach(Cell c, uint i, float height, float towards) {
+void clearFaceReach() { nearAtStart = nearAhead = 0u; }
+
+// Face i's plane lies `height` above the line's start, the line approaches it at rate
+// `towards` per unit of chart parameter, and the pass has found no exit before sExitSoFar.
+void noteFaceReach(Cell c, uint i, float height, float towards, float sExitSoFar) {
   if (i >= 32u) return;
   float beyond = height - c.tube_reach;
-  faceReachedAt[i] = beyond <= 0.0 ? 0.0 : towards > 0.0 ? beyond / towards : FAR;
+  if (beyond <= 0.0) nearAtStart |= 1u << i;
+  else if (towards > 0.0 && beyond <= sExitSoFar * towards) nearAhead |= 1u << i;
 }
 
 // Bit i set when local face i of the cell (i < 32) comes within its tube reach of the segment
-// s in [0, sMax] of the line noteFaceReach saw: min(h(0), h(sMax)) <= reach, h linear in s
-// (near_faces in server/render/tube_culling.h).
-uint nearFaces(Cell c, float sMax) {
-  uint near = 0u;
-  for (uint i = 0u; i < min(c.face_count, 32u); ++i)
-    if (faceReachedAt[i] <= sMax) near |= 1u << i;
+// o + s d, s in [0, sMax], of the line noteFaceReach saw: min(h(0), h(sMax)) <= reach, h
+// linear in s (near_faces in server/render/tube_culling.h). Only the faces ahead that the pass
+// kept are read again, a few of the cell's faces.
+uint nearFaces(Cell c, vec3 o, vec3 d, float sMax) {
+  uint near = nearAtStart;
+  for (uint pending = nearAhead; pending != 0u; pending &= pending - 1u) {
+    uint i = uint(findLSB(pending));
+    vec4 plane = cellFaces[c.face_begin + i].plane;
+    float beyond = plane.w - dot(plane.xyz, o) - c.tube_reach;
+    if (beyond <= sMax * dot(plane.xyz, d)) near |= 1u << i;
+  }
   return near;
 }
 
@@ -48,7 +56,7 @@ ChartHit nearestTube(uint cell, vec3 o, vec3 d, float sMax, bool anyHit) {
   ChartHit hit = noChartHit();
   Cell c = cellRecord(cell);
   if (c.tube_count == 0u) return hit;
-  uint near = nearFaces(c, sMax);
+  uint near = nearFaces(c, o, d, sMax);
   for (uint pending = near; pending != 0u; pending &= pending - 1u) {
     CellFace face = cellFaces[c.face_begin + uint(findLSB(pending))];
     for (uint pairs = face.tube_partners & near; pairs != 0u; pairs &= pairs - 1u) {
