@@ -254,9 +254,7 @@ double isometry_error(GeometryKind k, const Mat4& g) {
 }
 
 double relative_isometry_error(GeometryKind k, const Mat4& g) {
-  double size = 1;
-  for (const auto& row : g.m)
-    for (double x : row) size = std::max(size, std::abs(x));
+  const double size = std::max(1.0, g.max_abs());
   return isometry_error(k, g) / (size * size);
 }
 

@@ -123,11 +123,7 @@ Mat4 narrow(const M4<T>& m) {
 // Double loses u |g| |p| on g p, binary128 only the u |p| that p's own rounding costs: an H3
 // isometry carrying the origin further than ~7.6 (entries above 2^10) is held wide.
 bool needs_wide(GeometryKind k, const Mat4& g) {
-  if (k != GeometryKind::Hyperbolic) return false;
-  double size = 0;
-  for (const auto& row : g.m)
-    for (double x : row) size = std::max(size, std::abs(x));
-  return size > 1024;
+  return k == GeometryKind::Hyperbolic && g.max_abs() > 1024;
 }
 
 }  // namespace
