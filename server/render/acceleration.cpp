@@ -132,7 +132,8 @@ SceneAccelerationStructures SceneAccelerationStructures::build(VulkanContext& ct
           out.indices.address() + VkDeviceSize(cell.first_triangle) * 3 * sizeof(uint32_t);
       out.bottom.push_back(AccelerationStructure::build(
           ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, geometry, cell.triangle_count));
-      instances.push_back(instance_of(out.bottom.back(), cell.first_triangle, mask, 0));
+      instances.push_back(instance_of(out.bottom.back(), cell.first_triangle, mask,
+                                        HIT_RECORD_TRIANGLES));
     }
     if (cell.sphere_ref_count > 0) {
       VkAccelerationStructureGeometryKHR geometry{
@@ -146,7 +147,8 @@ SceneAccelerationStructures SceneAccelerationStructures::build(VulkanContext& ct
       aabbs.stride = sizeof(GpuAabb);
       out.bottom.push_back(AccelerationStructure::build(
           ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, geometry, cell.sphere_ref_count));
-      instances.push_back(instance_of(out.bottom.back(), cell.first_sphere_ref, mask, 1));
+      instances.push_back(instance_of(out.bottom.back(), cell.first_sphere_ref, mask,
+                                        HIT_RECORD_SPHERES));
     }
   }
 

@@ -141,8 +141,8 @@ class RayTracingBackend : public TraceBackend {
              "vkGetRayTracingShaderGroupHandlesKHR");
 
     // Regions: raygen | miss | triangle hit, sphere hit; each base-aligned. Instances pick
-    // their hit record by kind (acceleration.h: 0 triangles, 1 spheres); a kind the scene
-    // lacks is never hit, and its record repeats the other one.
+    // their hit record by kind (HIT_RECORD_*, common/gpu_types.h); a kind the scene lacks is
+    // never hit, and its record repeats the other one.
     const VkDeviceSize raygen_size = align_up(stride, base);
     const VkDeviceSize miss_size = align_up(stride, base);
     const VkDeviceSize hit_size = align_up(2 * stride, base);
@@ -157,8 +157,8 @@ class RayTracingBackend : public TraceBackend {
     copy(1, raygen_size);
     if (groups > 2) {
       const uint32_t triangle_group = 2, sphere_group = groups - 1;
-      copy(triangle_group, raygen_size + miss_size);
-      copy(sphere_group, raygen_size + miss_size + stride);
+      copy(triangle_group, raygen_size + miss_size + HIT_RECORD_TRIANGLES * stride);
+      copy(sphere_group, raygen_size + miss_size + HIT_RECORD_SPHERES * stride);
     }
 
     raygen_region_ = {start, raygen_size, raygen_size};

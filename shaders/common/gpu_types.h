@@ -1,4 +1,5 @@
-// Every struct the host writes and the shaders read: the one definition, compiled by the
+// Every struct the host writes and the shaders read, and the hit kinds and hit records both
+// name: the one definition, compiled by the
 // shaders (common/scene_data.glsl, std430 buffers, the std140 frame block, the push constants)
 // and by the host (server/render/packed_scene.h, emitters.h, frame_uniforms.h: namespace
 // geodesic::gpu, with vec4 / mat4 / uint as std::array<float, 4> / std::array<float, 16>
@@ -17,6 +18,16 @@ using vec4 = std::array<float, 4>;
 using mat4 = std::array<float, 16>;  // column-major
 using uint = std::uint32_t;
 #endif
+
+// What a chart segment hit (ChartHit.kind, integrator/chart_ray.glsl).
+#define HIT_NONE 0u
+#define HIT_TRIANGLE 1u
+#define HIT_SPHERE 2u
+#define HIT_TUBE 3u
+// The hit record that a primitive kind's instances select in the ray-tracing pipeline's
+// binding table (render/acceleration.cpp, ray_tracing_backend.cpp).
+#define HIT_RECORD_TRIANGLES 0u
+#define HIT_RECORD_SPHERES 1u
 
 struct Material {
   vec4 ambient;       // rgb: k_a

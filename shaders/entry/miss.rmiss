@@ -7,4 +7,4 @@
 
 layout(location = 0) rayPayloadInEXT ChartHit payload;
 
-void main() { payload.kind = 0u; }
+void main() { payload.kind = HIT_NONE; }

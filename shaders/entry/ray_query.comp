@@ -44,7 +44,7 @@ ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool 
     float s, t;
     if (sphereCandidate(sphereRefs[refIndex], p, v, 0.0, sLimit, s, t)) {
       rayQueryGenerateIntersectionEXT(q, s);
-      best = ChartHit(2u, sphereRefs[refIndex].sphere, s, t, vec2(0.0));
+      best = ChartHit(HIT_SPHERE, sphereRefs[refIndex].sphere, s, t, vec2(0.0));
     }
 #endif
   }
@@ -52,7 +52,7 @@ ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool 
   if (type == gl_RayQueryCommittedIntersectionNoneEXT) return noChartHit();
 #if defined(HAS_TRIANGLES)
   if (type == gl_RayQueryCommittedIntersectionTriangleEXT)
-    return ChartHit(1u,
+    return ChartHit(HIT_TRIANGLE,
                     rayQueryGetIntersectionInstanceCustomIndexEXT(q, true) +
                         rayQueryGetIntersectionPrimitiveIndexEXT(q, true),
                     rayQueryGetIntersectionTEXT(q, true), FAR,

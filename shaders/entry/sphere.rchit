@@ -10,5 +10,5 @@ hitAttributeEXT float arcLength;
 
 void main() {
   uint sphere = sphereRefs[gl_InstanceCustomIndexEXT + gl_PrimitiveID].sphere;
-  payload = ChartHit(2u, sphere, gl_HitTEXT, arcLength, vec2(0.0));
+  payload = ChartHit(HIT_SPHERE, sphere, gl_HitTEXT, arcLength, vec2(0.0));
 }

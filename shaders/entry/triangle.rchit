@@ -9,5 +9,5 @@ layout(location = 0) rayPayloadInEXT ChartHit payload;
 hitAttributeEXT vec2 barycentrics;
 
 void main() {
-  payload = ChartHit(1u, gl_InstanceCustomIndexEXT + gl_PrimitiveID, gl_HitTEXT, FAR, barycentrics);
+  payload = ChartHit(HIT_TRIANGLE, gl_InstanceCustomIndexEXT + gl_PrimitiveID, gl_HitTEXT, FAR, barycentrics);
 }

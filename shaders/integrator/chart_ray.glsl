@@ -30,7 +30,7 @@ struct GeodesicRay {
   uint enteredFace;  // face it entered the cell through (~0u: none), never an exit
 };
 
-// The closest hit along one chart segment. kind: 0 none, 1 triangle, 2 sphere, 3 edge tube.
+// The closest hit along one chart segment. kind: HIT_NONE, _TRIANGLE, _SPHERE or _TUBE.
 struct ChartHit {
   uint kind;
   uint index;       // global triangle or sphere index
@@ -39,7 +39,7 @@ struct ChartHit {
   vec2 barycentrics;
 };
 
-ChartHit noChartHit() { return ChartHit(0u, 0u, FAR, FAR, vec2(0.0)); }
+ChartHit noChartHit() { return ChartHit(HIT_NONE, 0u, FAR, FAR, vec2(0.0)); }
 
 #if defined(CELL_CROSSING) || defined(MULTIPLE_CHARTS)
 // A cell's record. In a space of one cell (SINGLE_CELL) every ray reads the same one, at an

@@ -95,7 +95,7 @@ bool followGeodesic(inout GeodesicRay ray, float maxDistance, bool anyHit, out C
   ChartLine whole = chartLineOf(ray);
   float sWhole = maxDistance >= FAR ? FAR : chartParameter(whole.p, whole.v, maxDistance);
   hit = traceChart(whole.o, whole.d, sWhole, ray.cell, whole.p, whole.v, anyHit);
-  return hit.kind != 0u;
+  return hit.kind != HIT_NONE;
 #else
 #if defined(INTERNAL_WALLS)
   uint walls = 0u;  // crossed between pieces of the domain: bounded apart from MAX_CROSSINGS
@@ -111,16 +111,16 @@ bool followGeodesic(inout GeodesicRay ray, float maxDistance, bool anyHit, out C
 #if defined(HAS_TUBES)
     // A tube hit bounds the traversal: only something nearer can replace it.
     ChartHit tube = nearestTube(ray.cell, line.o, line.d, sMax, anyHit);
-    if (tube.kind != 0u && anyHit) {
+    if (tube.kind != HIT_NONE && anyHit) {
       hit = tube;
       return true;
     }
     hit = traceChart(line.o, line.d, min(sMax, tube.s), ray.cell, line.p, line.v, anyHit);
-    if (hit.kind == 0u) hit = tube;
+    if (hit.kind == HIT_NONE) hit = tube;
 #else
     hit = traceChart(line.o, line.d, sMax, ray.cell, line.p, line.v, anyHit);
 #endif
-    if (hit.kind != 0u) return true;
+    if (hit.kind != HIT_NONE) return true;
     if (last) return false;
     travelled += tExit;
     ray = crossFace(ray, face, tExit);

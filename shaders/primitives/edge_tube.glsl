@@ -45,7 +45,7 @@ uint nearFaces(Cell c, vec3 o, vec3 d, float sMax) {
 void testTube(uint i, vec3 o, vec3 d, float sMax, inout ChartHit hit) {
   vec4 a = tubes[i].a;
   float s = intersectCapsule(a.xyz, tubes[i].b.xyz, a.w, o, d, 0.0, min(sMax, hit.s));
-  if (s < FAR_CAPSULE) hit = ChartHit(3u, i, s, FAR, vec2(0.0));
+  if (s < FAR_CAPSULE) hit = ChartHit(HIT_TUBE, i, s, FAR, vec2(0.0));
 }
 
 // The nearest tube of the cell on o + s d, s in (0, sMax] (for a shadow ray any tube);
@@ -63,12 +63,12 @@ ChartHit nearestTube(uint cell, vec3 o, vec3 d, float sMax, bool anyHit) {
       uint below = (1u << uint(findLSB(pairs))) - 1u;
       testTube(c.tube_begin + face.tubes + uint(bitCount(face.tube_partners & below)), o, d,
                sMax, hit);
-      if (anyHit && hit.kind != 0u) return hit;
+      if (anyHit && hit.kind != HIT_NONE) return hit;
     }
   }
   for (uint i = c.tube_begin + c.always_begin; i < c.tube_begin + c.tube_count; ++i) {
     testTube(i, o, d, sMax, hit);
-    if (anyHit && hit.kind != 0u) return hit;
+    if (anyHit && hit.kind != HIT_NONE) return hit;
   }
   return hit;
 }

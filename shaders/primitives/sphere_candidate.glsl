@@ -27,7 +27,7 @@ ChartHit nearestListedSphere(uint cell, vec4 p, vec4 v, float sMax, bool anyHit)
   for (uint i = c.sphere_begin; i < c.sphere_begin + c.sphere_count; ++i) {
     float s, t;
     if (!sphereCandidate(sphereRefs[i], p, v, 0.0, min(sMax, best.s), s, t)) continue;
-    best = ChartHit(2u, sphereRefs[i].sphere, s, t, vec2(0.0));
+    best = ChartHit(HIT_SPHERE, sphereRefs[i].sphere, s, t, vec2(0.0));
     if (anyHit) break;
   }
   return best;

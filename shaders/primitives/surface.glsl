@@ -59,14 +59,14 @@ Surface chartSurface(GeodesicRay ray, vec3 x, vec3 n, float delta, float sHit) {
   return s;
 }
 
-// The surface hit by `ray` (whose current segment produced `hit`): kind 1 a triangle, 2 a
-// sphere, 3 an edge tube.
+// The surface hit by `ray` (whose current segment produced `hit`): a triangle, a sphere or an
+// edge tube (ChartHit.kind).
 Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
   Surface s;
   s.hit = 1u;
   s.cell = ray.cell;
 #if defined(HAS_SPHERES)
-  if (hit.kind == 2u) {
+  if (hit.kind == HIT_SPHERE) {
     Sphere sphere = spheres[hit.index];
     s.position = normalizePoint(geodesicPoint(ray.p, ray.v, hit.t));
     s.incoming = geodesicTangent(ray.p, ray.v, hit.t);
@@ -79,7 +79,7 @@ Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
   }
 #endif
 #if defined(HAS_TUBES)
-  if (hit.kind == 3u) {  // an edge tube: its capsule's normal in the chart, as a plane's
+  if (hit.kind == HIT_TUBE) {  // an edge tube: its capsule's normal in the chart, as a plane's
     Tube tube = tubes[hit.index];
     mat4 P = cellChartIsometry(ray.cell);
     vec4 p = P * ray.p;
