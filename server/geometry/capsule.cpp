@@ -37,13 +37,15 @@ double intersect_capsule(const Capsule& c, const Vec3& o, const Vec3& d, double 
                          double s_max) {
   const Vec3 axis = c.b - c.a;
   const double length2 = dot(axis, axis);
-  const Vec3 n = axis / std::sqrt(length2);
   const Vec3 oa = o - c.a;
   // The infinite cylinder: |perp(oa + s d)|^2 = r^2, perp removing the part along the axis.
-  // Both caps lie inside it, so a line that misses it misses the capsule.
-  const Vec3 oPerp = oa - dot(oa, n) * n, dPerp = d - dot(d, n) * n;
+  // Both caps lie inside it, so a line that misses it misses the capsule: the first test, as
+  // most lines tested miss (the shader returns there, before anything else).
+  const Vec3 oPerp = oa - (dot(oa, axis) / length2) * axis;
+  const Vec3 dPerp = d - (dot(d, axis) / length2) * axis;
   const double A = dot(dPerp, dPerp), B = dot(oPerp, dPerp),
                C = dot(oPerp, oPerp) - c.radius * c.radius;
+  if (B * B - A * C < 0 && C > 0) return kNone;
   double best = kNone;
   auto consider = [&](double s, bool valid) {
     if (valid && s > s_min && s <= s_max && s < best) best = s;

@@ -20,10 +20,11 @@ const float FAR_CAPSULE = 1e30;
 float intersectCapsule(vec3 a, vec3 b, float r, vec3 o, vec3 d, float sMin, float sMax) {
   vec3 axis = b - a;
   float length2 = dot(axis, axis);
-  vec3 n = axis * inversesqrt(length2);
   vec3 oa = o - a;
-  vec3 oPerp = oa - dot(oa, n) * n, dPerp = d - dot(d, n) * n;
+  vec3 oPerp = oa - (dot(oa, axis) / length2) * axis;
+  vec3 dPerp = d - (dot(d, axis) / length2) * axis;
   float A = dot(dPerp, dPerp), B = dot(oPerp, dPerp), C = dot(oPerp, oPerp) - r * r;
+  if (B * B - A * C < 0.0 && C > 0.0) return FAR_CAPSULE;  // most lines: the cylinder missed
   float best = FAR_CAPSULE;
   float s0, s1;
   if (A > 0.0 && capsuleRoots(A, B, C, s0, s1)) {
@@ -31,7 +32,7 @@ float intersectCapsule(vec3 a, vec3 b, float r, vec3 o, vec3 d, float sMin, floa
     if (y0 >= 0.0 && y0 <= length2 && s0 > sMin && s0 <= sMax) best = s0;
     else if (y1 >= 0.0 && y1 <= length2 && s1 > sMin && s1 <= sMax) best = s1;
   } else if (C > 0.0) {
-    return FAR_CAPSULE;  // misses the cylinder, and the caps lie inside it
+    return FAR_CAPSULE;  // parallel to the axis and outside the cylinder
   }
   float dd = dot(d, d);
   for (int end = 0; end < 2; ++end) {
