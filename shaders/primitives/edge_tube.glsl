@@ -49,7 +49,7 @@ void testTube(uint i, vec3 o, vec3 d, float sMax, inout ChartHit hit) {
 }
 
 // The nearest tube of the cell on o + s d, s in (0, sMax] (for a shadow ray any tube);
-// kind 3 and the tube's index, or no hit. Only tubes both of whose faces are near are tested,
+// HIT_TUBE and the tube's index, or no hit. Only tubes both of whose faces are near are tested,
 // each found from its pair of faces without reading the others (CellFace.tube_partners). The
 // faces' reach is that noteFaceReach noted for this line.
 ChartHit nearestTube(uint cell, vec3 o, vec3 d, float sMax, bool anyHit) {
