@@ -115,10 +115,14 @@ void pack_cell_tubes(const Scene& scene, const Cell& cell, GpuCell& packed, Pack
   std::stable_sort(tubes.begin(), tubes.end(), [](const GpuTube& x, const GpuTube& y) {
     return std::pair(x.face_a, x.face_b) < std::pair(y.face_a, y.face_b);
   });
-  for (size_t i = 1; i < tubes.size(); ++i)  // a second tube on one pair: always tested
-    if (tubes[i].face_a != kAlwaysTest && tubes[i].face_a == tubes[i - 1].face_a &&
-        tubes[i].face_b == tubes[i - 1].face_b)
+  // Past the first tube on a pair of faces (sorted together), the others are always tested.
+  for (size_t first = 0, i = 1; i < tubes.size(); ++i) {
+    if (tubes[i].face_a == kAlwaysTest) break;  // sorted last
+    if (tubes[i].face_a != tubes[first].face_a || tubes[i].face_b != tubes[first].face_b)
+      first = i;
+    else
       tubes[i].face_a = tubes[i].face_b = kAlwaysTest;
+  }
   std::stable_partition(tubes.begin(), tubes.end(),
                         [](const GpuTube& t) { return t.face_a != kAlwaysTest; });
   if (tubes.size() > 0xFFFF) throw SceneError("more than 65535 edge tubes in one cell");

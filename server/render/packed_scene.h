@@ -1,8 +1,7 @@
 // The scene flattened into the arrays the shaders read (std430; the structs are
-// shaders/common/gpu_types.h's, which the shaders compile too): model-space spheres and lights, and for every cell
-// of the chart atlas its triangles and edge tubes (in the cell's chart) and sphere bounding
-// boxes. Pure data:
-// built and tested without a device.
+// shaders/common/gpu_types.h's, which the shaders compile too): model-space spheres and
+// lights, and for every cell of the chart atlas its triangles and edge tubes (in the cell's
+// chart) and sphere bounding boxes. Pure data: built and tested without a device.
 #pragma once
 
 #include <array>
