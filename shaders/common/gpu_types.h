@@ -1,12 +1,12 @@
 // Every struct the host writes and the shaders read, and the hit kinds and hit records both
-// name: the one definition, compiled by the
-// shaders (common/scene_data.glsl, std430 buffers, the std140 frame block, the push constants)
-// and by the host (server/render/packed_scene.h, emitters.h, frame_uniforms.h: namespace
-// geodesic::gpu, with vec4 / mat4 / uint as std::array<float, 4> / std::array<float, 16>
-// column-major / uint32_t). Members are laid out so that C++ and std430/std140 agree (vec4s
-// first, scalars after, padded to 16 bytes); tests/unit/gpu_layout_test.cpp holds each
-// member's offset and each array's stride to what the shader compiler gives. Member names
-// avoid GLSL's keywords and built-ins (smooth, clamp, sample).
+// name: the one definition, compiled by the shaders (common/scene_data.glsl: std430 buffers,
+// the std140 frame block, the push constants) and by the host (server/render/packed_scene.h,
+// emitters.h, frame_uniforms.h: namespace geodesic::gpu, with vec4 / mat4 / uint as
+// std::array<float, 4> / std::array<float, 16> column-major / uint32_t). Members are laid out
+// so that C++ and std430/std140 agree (vec4s first, scalars after, padded to 16 bytes);
+// tests/unit/gpu_layout_test.cpp holds each member's offset and each array's stride to what
+// the shader compiler gives. Member names avoid GLSL's keywords and built-ins (smooth, clamp,
+// sample).
 #ifndef GEODESIC_GPU_TYPES_H
 #define GEODESIC_GPU_TYPES_H
 
@@ -98,7 +98,7 @@ struct Cell {
   uint tube_begin;  // its edge tubes: tubes [tube_begin, tube_begin + tube_count)
   uint tube_count;
   float tube_reach;  // the largest radius among them
-  // Its tubes sorted by their first face (CellFace.tubes), then those always tested:
+  // Its tubes sorted by their two faces (CellFace.tubes), then those always tested:
   // tubes [tube_begin + always_begin, tube_begin + tube_count).
   uint always_begin;
   // Its sphere refs, sphere refs [sphere_begin, sphere_begin + sphere_count) (SPHERE_LIST).
