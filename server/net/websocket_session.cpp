@@ -185,6 +185,22 @@ struct WebSocketSession::Prepared {
   std::string failure;  // an unexpected exception: the session closes with 1011
 };
 
+// Carries out a change a client asked for (`open` when it opens a scene): what is wrong with
+// the request becomes an `error` message naming the field; anything else closes the session
+// with 1011.
+template <typename Change>
+void WebSocketSession::apply_change(const OpenRequest* open, Change change) {
+  try {
+    change();
+  } catch (const SceneError& e) {
+    send_text(error_message(service_error(e, open)));
+  } catch (const std::invalid_argument& e) {
+    send_text(error_message(service_error(e, open)));
+  } catch (const std::exception& e) {
+    close(static_cast<uint16_t>(websocket::close_code::internal_error), e.what());
+  }
+}
+
 // Runs the request on this strand; an `open`, and settings that need a new renderer, are
 // prepared on the preparation pool.
 void WebSocketSession::handle_message(const std::string& text) {
@@ -199,7 +215,7 @@ void WebSocketSession::handle_message(const std::string& text) {
   const OpenRequest* open = std::get_if<OpenRequest>(&message);
   const auto* settings = std::get_if<SessionSettings>(&message);
   const auto* motion = std::get_if<CameraMotion>(&message);
-  try {
+  apply_change(open, [&] {
     if (context_.preparation && (open || (settings && !render.settings_fit(*id_, *settings)) ||
                                  (motion && render.move_outgrows_frame(*id_, *motion))))
       return prepare(std::move(message));
@@ -211,13 +227,7 @@ void WebSocketSession::handle_message(const std::string& text) {
       render.apply_settings(*id_, *settings);
     }
     waiting_frame_.reset();  // rendered before the change
-  } catch (const SceneError& e) {
-    send_text(error_message(service_error(e, open)));
-  } catch (const std::invalid_argument& e) {
-    send_text(error_message(service_error(e, open)));
-  } catch (const std::exception& e) {
-    close(static_cast<uint16_t>(websocket::close_code::internal_error), e.what());
-  }
+  });
 }
 
 // The scene (bundled scene, document, generator text) is parsed and its group enumerated under
@@ -262,29 +272,20 @@ void WebSocketSession::on_prepared(Prepared prepared) {
   const auto* open = std::get_if<OpenRequest>(&prepared.message);
   if (id_ && !close_reason_) {
     RenderService& render = context_.render;
-    try {
+    apply_change(open, [&] {
       if (!prepared.failure.empty()) throw std::runtime_error(prepared.failure);
-      if (!prepared.error.empty()) {
-        send_text(std::move(prepared.error));
+      if (!prepared.error.empty()) return send_text(std::move(prepared.error));
+      if (open) {
+        send_text(scene_message(render.install_scene(*id_, std::move(*prepared.scene))));
+      } else if (const auto* motion = std::get_if<CameraMotion>(&prepared.message)) {
+        render.move_camera(*id_, *motion);
+        render.rebase(*id_, std::move(*prepared.scene));
       } else {
-        if (open) {
-          send_text(scene_message(render.install_scene(*id_, std::move(*prepared.scene))));
-        } else if (const auto* motion = std::get_if<CameraMotion>(&prepared.message)) {
-          render.move_camera(*id_, *motion);
-          render.rebase(*id_, std::move(*prepared.scene));
-        } else {
-          if (prepared.scene) render.install_scene(*id_, std::move(*prepared.scene));
-          render.apply_settings(*id_, std::get<SessionSettings>(prepared.message));
-        }
-        waiting_frame_.reset();  // rendered before the change
+        if (prepared.scene) render.install_scene(*id_, std::move(*prepared.scene));
+        render.apply_settings(*id_, std::get<SessionSettings>(prepared.message));
       }
-    } catch (const SceneError& e) {
-      send_text(error_message(service_error(e, open)));
-    } catch (const std::invalid_argument& e) {
-      send_text(error_message(service_error(e, open)));
-    } catch (const std::exception& e) {
-      close(static_cast<uint16_t>(websocket::close_code::internal_error), e.what());
-    }
+      waiting_frame_.reset();  // rendered before the change
+    });
   }
   if (texts_.size() >= kMaxQueuedTexts)
     read_paused_ = true;

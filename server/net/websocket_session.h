@@ -42,6 +42,8 @@ class WebSocketSession : public std::enable_shared_from_this<WebSocketSession> {
   bool evict_idle_session();
   void read();
   void on_read(beast::error_code ec, std::size_t bytes);
+  template <typename Change>
+  void apply_change(const OpenRequest* open, Change change);
   void handle_message(const std::string& text);
   void prepare(ClientMessage message);
   void on_prepared(Prepared prepared);
