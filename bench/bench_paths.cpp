@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "render/renderer.h"
+#include "render/device/renderer.h"
 #include "scene/scene_loader.h"
 
 using namespace geodesic;

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "render/pipeline_cache.h"
-#include "render/renderer.h"
+#include "render/device/pipeline_cache.h"
+#include "render/device/renderer.h"
 #include "scene/scene_loader.h"
 
 using namespace geodesic;

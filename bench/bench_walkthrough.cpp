@@ -17,7 +17,7 @@
 #include <thread>
 #include <vector>
 
-#include "render/render_service.h"
+#include "render/service/render_service.h"
 
 using namespace geodesic;
 using Clock = std::chrono::steady_clock;

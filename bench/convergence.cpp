@@ -28,9 +28,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "render/image_io.h"
-#include "render/relative_error.h"
-#include "render/renderer.h"
+#include "render/prepare/image_io.h"
+#include "render/prepare/relative_error.h"
+#include "render/device/renderer.h"
 #include "scene/scene_loader.h"
 
 namespace fs = std::filesystem;

@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "render/gpu_buffer.h"
-#include "render/vulkan_context.h"
+#include "render/device/gpu_buffer.h"
+#include "render/device/vulkan_context.h"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <exception>
 
-#include "render/image_io.h"
+#include "render/prepare/image_io.h"
 
 using namespace geodesic;
 

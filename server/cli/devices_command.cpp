@@ -1,7 +1,7 @@
 #include <cstdio>
 
-#include "render/trace_backend.h"
-#include "render/vulkan_context.h"
+#include "render/device/trace_backend.h"
+#include "render/device/vulkan_context.h"
 
 namespace geodesic {
 

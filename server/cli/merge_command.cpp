@@ -11,9 +11,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "render/accumulation_file.h"
-#include "render/exposure.h"
-#include "render/image_io.h"
+#include "render/prepare/accumulation_file.h"
+#include "render/prepare/exposure.h"
+#include "render/prepare/image_io.h"
 
 namespace geodesic {
 

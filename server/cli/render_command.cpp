@@ -15,14 +15,14 @@
 
 #include "cli/progress_bar.h"
 #include "cli/render_report.h"
-#include "render/accumulation_file.h"
-#include "render/convergence.h"
-#include "render/exposure.h"
-#include "render/image_io.h"
-#include "render/pass_slicer.h"
-#include "render/pipeline_cache.h"
-#include "render/renderer.h"
-#include "render/shader_dump.h"
+#include "render/prepare/accumulation_file.h"
+#include "render/prepare/convergence.h"
+#include "render/prepare/exposure.h"
+#include "render/prepare/image_io.h"
+#include "render/service/pass_slicer.h"
+#include "render/device/pipeline_cache.h"
+#include "render/device/renderer.h"
+#include "render/device/shader_dump.h"
 #include "scene/scene_source.h"
 
 namespace geodesic {
@@ -226,7 +226,7 @@ int render_command(int argc, char** argv) {
   const auto start = Clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
 
-  // Passes grow until one takes about a quarter second (render/pass_slicer.h: few submissions,
+  // Passes grow until one takes about a quarter second (render/service/pass_slicer.h: few submissions,
   // live progress, and a dense series early on); the stop conditions cap them. One point of the
   // series after every pass.
   ConvergenceLog log;

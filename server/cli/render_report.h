@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <string>
 
-#include "render/convergence.h"
+#include "render/prepare/convergence.h"
 
 namespace geodesic {
 

@@ -17,7 +17,7 @@
 #include "jobs/job_queue.h"
 #include "net/auth.h"
 #include "net/server.h"
-#include "render/render_service.h"
+#include "render/service/render_service.h"
 
 namespace geodesic {
 namespace {

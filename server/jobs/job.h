@@ -13,8 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "geometry/vec.h"
-#include "render/convergence.h"
-#include "render/render_service.h"
+#include "render/prepare/convergence.h"
+#include "render/service/render_service.h"
 
 namespace geodesic::jobs {
 

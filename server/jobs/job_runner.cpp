@@ -8,11 +8,11 @@
 
 #include "jobs/checkpoint.h"
 #include "jobs/durable_file.h"
-#include "render/exposure.h"
-#include "render/image_io.h"
-#include "render/pass_slicer.h"
-#include "render/renderer.h"
-#include "render/vulkan_context.h"
+#include "render/prepare/exposure.h"
+#include "render/prepare/image_io.h"
+#include "render/service/pass_slicer.h"
+#include "render/device/renderer.h"
+#include "render/device/vulkan_context.h"
 
 namespace geodesic::jobs {
 namespace {

@@ -14,7 +14,7 @@
 
 #include "jobs/job_execution.h"
 #include "jobs/job_store.h"
-#include "render/render_service.h"
+#include "render/service/render_service.h"
 
 namespace geodesic::jobs {
 

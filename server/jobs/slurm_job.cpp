@@ -8,7 +8,7 @@
 
 #include "jobs/durable_file.h"
 #include "jobs/subprocess.h"
-#include "render/image_io.h"
+#include "render/prepare/image_io.h"
 
 namespace geodesic::jobs {
 namespace {

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "net/server_context.h"
-#include "render/render_service.h"
+#include "render/service/render_service.h"
 
 namespace geodesic::net {
 

@@ -15,7 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "render/render_service.h"
+#include "render/service/render_service.h"
 #include "scene/scene_source.h"
 
 namespace geodesic::net {

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "render/render_service.h"
+#include "render/service/render_service.h"
 
 namespace geodesic::jobs {
 class JobQueue;

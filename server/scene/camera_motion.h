@@ -14,7 +14,7 @@ struct CameraMotion {
 };
 
 // The pose after the motion, re-orthonormalised onto the isometry group. (Carrying it back
-// into a fundamental domain is the renderer's placement: see render/cells.h.)
+// into a fundamental domain is the renderer's placement: see render/prepare/cells.h.)
 Mat4 apply_motion(GeometryKind kind, const Mat4& pose, const CameraMotion& motion);
 
 }  // namespace geodesic

@@ -22,7 +22,7 @@ struct DomainFace {
 
 // A spherical domain that no single gnomonic chart holds (scene/chart_atlas.h) is cut into
 // pieces, each a convex polyhedron in the chart centred on `centre`; the renderer makes each a
-// cell (render/cells.h). A ray leaving piece p through face f continues as (g q, g v) in piece
+// cell (render/prepare/cells.h). A ray leaving piece p through face f continues as (g q, g v) in piece
 // `target`, entering through face `partner` (global index: pieces number faces in order).
 struct PieceFace {
   Vec3 normal;  // outward unit normal in the piece's chart

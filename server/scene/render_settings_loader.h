@@ -9,7 +9,7 @@ namespace geodesic {
 
 RenderSettings read_render(const JsonNode& node);
 
-// Stops (a number in [-20, 20]) or "auto" (render/exposure.h); the scene's, a `settings`
+// Stops (a number in [-20, 20]) or "auto" (render/prepare/exposure.h); the scene's, a `settings`
 // message's and a render job's exposure. Throws std::invalid_argument with the reason.
 Exposure exposure_from_json(const nlohmann::ordered_json& value);
 nlohmann::ordered_json exposure_to_json(const Exposure& exposure);

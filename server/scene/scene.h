@@ -80,7 +80,7 @@ enum class LightSampling : uint32_t { Mis = 0, Bsdf = 1, Light = 2 };
 
 // How linear radiance becomes a display value (PNG, JPEG, the browser's frames; an EXR keeps
 // the radiance): scaled by 2^stops, or, when automatic, by the scale that brings the image's
-// log-average luminance to middle grey (render/exposure.h).
+// log-average luminance to middle grey (render/prepare/exposure.h).
 struct Exposure {
   double stops = 0;
   bool automatic = false;

@@ -1,5 +1,5 @@
 // An isometry applied to a whole scene: its objects, lights and camera. The renderer uses it to
-// work in a frame centred on the camera (render/renderer.h), and tests to move a scene far from
+// work in a frame centred on the camera (render/device/renderer.h), and tests to move a scene far from
 // the origin. In H3 it composes in binary128 (geometry/wide_isometry.h), so a scene 20 units
 // out is moved back to the origin as precisely as its double coordinates place it.
 #pragma once

@@ -1,5 +1,5 @@
 // Descriptor binding numbers of set 0: the one definition, read by the shaders
-// (common/scene_data.glsl) and by the host (server/render/scene_bindings.h), which both
+// (common/scene_data.glsl) and by the host (server/render/prepare/scene_bindings.h), which both
 // compile it (plain #defines: valid GLSL and C++). tests/unit/gpu_layout_test.cpp checks that
 // each binding holds the block the host binds there.
 #ifndef GEODESIC_BINDINGS_H

@@ -1,6 +1,6 @@
 // Every struct the host writes and the shaders read, and the hit kinds and hit records both
 // name: the one definition, compiled by the shaders (common/scene_data.glsl: std430 buffers,
-// the std140 frame block, the push constants) and by the host (server/render/packed_scene.h,
+// the std140 frame block, the push constants) and by the host (server/render/prepare/packed_scene.h,
 // emitters.h, frame_uniforms.h: namespace geodesic::gpu, with vec4 / mat4 / uint as
 // std::array<float, 4> / std::array<float, 16> column-major / uint32_t). Members are laid out
 // so that C++ and std430/std140 agree (vec4s first, scalars after, padded to 16 bytes);
@@ -25,7 +25,7 @@ using uint = std::uint32_t;
 #define HIT_SPHERE 2u
 #define HIT_TUBE 3u
 // The hit record that a primitive kind's instances select in the ray-tracing pipeline's
-// binding table (render/acceleration.cpp, ray_tracing_backend.cpp).
+// binding table (render/device/acceleration.cpp, ray_tracing_backend.cpp).
 #define HIT_RECORD_TRIANGLES 0u
 #define HIT_RECORD_SPHERES 1u
 
@@ -65,7 +65,7 @@ struct TriangleInfo {
   uint emitter;  // index into the emitters, ~0u when it does not emit
 };
 
-// A light source of the physical model (server/render/emitters.h).
+// A light source of the physical model (server/render/prepare/emitters.h).
 struct Emitter {
   vec4 center;    // model point: the light, the sphere's centre or the triangle's centroid
   vec4 corner;    // triangle: first corner and two edges in the chart around the centroid
@@ -90,7 +90,7 @@ struct LightImage {
   vec4 center;
 };
 
-// A cell of the chart atlas (server/render/cells.h).
+// A cell of the chart atlas (server/render/prepare/cells.h).
 struct Cell {
   mat4 chart_isometry;  // model -> the cell's frame
   uint face_begin;
@@ -107,7 +107,7 @@ struct Cell {
 };
 
 // An edge tube: a capsule in its cell's chart (geometry/capsule.h, scene.h EdgeTube) and two
-// local faces whose planes hold its axis (server/render/tube_culling.h; ~0u: always tested).
+// local faces whose planes hold its axis (server/render/prepare/tube_culling.h; ~0u: always tested).
 struct Tube {
   vec4 a;  // xyz: one end of the axis; w: chart radius
   vec4 b;  // xyz: the other end
@@ -125,7 +125,7 @@ struct CellFace {
   uint internal;  // 1: a wall between pieces of one domain (not a crossing of MAX_CROSSINGS)
   // The cell's tubes whose first face this is, one per second face, in the order of their
   // second faces from local offset `tubes`; bit j of `tube_partners` set when one has second
-  // face j (server/render/tube_culling.h): the tube on faces (this, j) is at `tubes` plus the
+  // face j (server/render/prepare/tube_culling.h): the tube on faces (this, j) is at `tubes` plus the
   // bits of tube_partners below j.
   uint tubes;
   uint tube_partners;
@@ -158,7 +158,7 @@ struct FrameUniforms {
 
 // Which samples one dispatch adds, [start, start + count), to which pixels: a rectangle of
 // column_count x row_count from (column_offset, row_offset) (the push constants). A pass over
-// a large image is split into slices (render/pass_slicer.h) so that the render thread can turn
+// a large image is split into slices (render/service/pass_slicer.h) so that the render thread can turn
 // to a camera move or another session in between.
 struct SampleRange {
   uint start;

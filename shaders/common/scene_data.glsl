@@ -1,7 +1,7 @@
 // Descriptor layout shared by every entry point: the structs from common/gpu_types.h and the
 // binding numbers from common/bindings.h, both compiled by the host too
 // (tests/unit/gpu_layout_test.cpp holds the host to the compiled layout). A buffer is declared
-// only when the pipeline's features read it (server/render/pipeline_features.cpp decides the
+// only when the pipeline's features read it (server/render/prepare/pipeline_features.cpp decides the
 // same, binding by binding).
 #ifndef SCENE_DATA_GLSL
 #define SCENE_DATA_GLSL

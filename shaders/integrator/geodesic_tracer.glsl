@@ -4,7 +4,7 @@
 // without faces (CELL_CROSSING undefined) traces one chart segment. Walls between the pieces of
 // one domain (INTERNAL_WALLS) do not count: up to MAX_WALL_CROSSINGS of them, as a ray that
 // starts on the edge all the pieces of a lune share passes through many at once. The crossing
-// code is the pairing kind's only (PAIRING_*, server/render/pipeline_features.h). Edge tubes
+// code is the pairing kind's only (PAIRING_*, server/render/prepare/pipeline_features.h). Edge tubes
 // (HAS_TUBES) are tested in the chart beside the traversal (primitives/edge_tube.glsl).
 // Needs ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool any)
 // from the entry point.

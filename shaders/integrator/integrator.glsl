@@ -1,6 +1,6 @@
 // Tracing through cells, surfaces, shading and the integrators, included by an entry point
 // after it defines traceChart(). Each lighting model, its lights and its materials come in
-// only when the pipeline's features ask for them (server/render/pipeline_features.h).
+// only when the pipeline's features ask for them (server/render/prepare/pipeline_features.h).
 #include "integrator/geodesic_tracer.glsl"
 #include "primitives/surface.glsl"
 #include "integrator/local_frame.glsl"

@@ -1,9 +1,9 @@
 // Light sampling for the physical model (next-event estimation) and the density of the same
 // strategy for directions found by BSDF sampling (multiple importance sampling). An emitter
 // is chosen by power; then one of its geodesics from the shading point: one per image of the
-// emitter under the manifold's group (server/render/emitters.h), and in S3 also the long way
+// emitter under the manifold's group (server/render/prepare/emitters.h), and in S3 also the long way
 // round (distance 2 pi - d), each weighted by how much light it can bring, up to
-// render.light_cutoff (server/render/emitters.h). A point light at distance d gives irradiance I cos / A(d); an area light
+// render.light_cutoff (server/render/prepare/emitters.h). A point light at distance d gives irradiance I cos / A(d); an area light
 // is sampled by solid angle (spheres: the cone they subtend) or by area with the Jacobian
 // A(d) / cos (triangles), A(d) = d^2, sinh^2 d or sin^2 d. Compiled only with LIGHT_SAMPLING,
 // and each kind of emitter only when the scene has one (HAS_POINT_LIGHTS, HAS_SPHERE_EMITTERS,

@@ -28,7 +28,7 @@ void noteFaceReach(Cell c, uint i, float height, float towards, float sExitSoFar
 
 // Bit i set when local face i of the cell (i < 32) comes within its tube reach of the segment
 // o + s d, s in [0, sMax], of the line noteFaceReach saw: min(h(0), h(sMax)) <= reach, h
-// linear in s (near_faces in server/render/tube_culling.h). Only the faces ahead that the pass
+// linear in s (near_faces in server/render/prepare/tube_culling.h). Only the faces ahead that the pass
 // kept are read again, a few of the cell's faces.
 uint nearFaces(Cell c, vec3 o, vec3 d, float sMax) {
   uint near = nearAtStart;

@@ -20,7 +20,7 @@ bool sphereCandidate(SphereRef ref, vec4 p, vec4 v, float sMin, float sMax, out 
 #if defined(SPHERE_LIST)
 // The nearest of the cell's spheres on the chart segment s in (0, sMax] (for a shadow ray any
 // one), each tested as a traversal would confirm it: a cell with faces and a few spheres
-// alone (server/render/pipeline_features.h sphere_list) needs no acceleration structure.
+// alone (server/render/prepare/pipeline_features.h sphere_list) needs no acceleration structure.
 ChartHit nearestListedSphere(uint cell, vec4 p, vec4 v, float sMax, bool anyHit) {
   ChartHit best = noChartHit();
   Cell c = cellRecord(cell);

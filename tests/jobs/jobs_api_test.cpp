@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "job_daemon.h"
-#include "render/image_io.h"
+#include "render/prepare/image_io.h"
 
 namespace geodesic::test {
 namespace {

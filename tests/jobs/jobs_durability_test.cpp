@@ -16,7 +16,7 @@
 #include <sys/resource.h>
 
 #include "job_daemon.h"
-#include "render/image_io.h"
+#include "render/prepare/image_io.h"
 
 namespace geodesic::test {
 namespace {

@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "../render/render_fixture.h"
-#include "render/render_service.h"
+#include "render/service/render_service.h"
 #include "sanitizer.h"
 
 namespace geodesic::test {

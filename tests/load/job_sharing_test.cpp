@@ -2,7 +2,7 @@
 // glass spheres and five hundred point lights at 1920x1080, where one pixel sample costs about
 // 0.25 ms on lavapipe and one row of the image half a second. The job's renderer is built
 // beside the rendering (not in a device turn) and its passes are cut into slices of about
-// RenderService::kSliceSeconds, part of a row when a row is longer (render/pass_slicer.h), so
+// RenderService::kSliceSeconds, part of a row when a row is longer (render/service/pass_slicer.h), so
 // the session keeps a frame at least every 250 ms and /healthz answers within 100 ms while
 // the job is prepared and renders. Before: 17 s without a frame, then 6 s gaps. Time bounds
 // are held in the build users run (sanitizer.h).

@@ -15,7 +15,7 @@
 
 #include "net/beast.h"
 #include "net/server.h"
-#include "render/render_service.h"
+#include "render/service/render_service.h"
 
 namespace geodesic::test {
 

@@ -11,8 +11,8 @@
 #include <gtest/gtest.h>
 
 #include "daemon_fixture.h"
-#include "render/exposure.h"
-#include "render/image_io.h"
+#include "render/prepare/exposure.h"
+#include "render/prepare/image_io.h"
 
 namespace geodesic::test {
 namespace {
@@ -62,7 +62,7 @@ TEST(ExposureSession, ANewExposureReencodesTheAccumulationAndItsJpegFollowsTwoTo
   EXPECT_GT(stops, -kMaxExposureStops);
   EXPECT_LT(stops, kMaxExposureStops);
   // Its JPEG's values are the plain one's times 2^stops where neither clips (the linear
-  // image it was computed from stays on the server: render/exposure.h's closed form is checked
+  // image it was computed from stays on the server: render/prepare/exposure.h's closed form is checked
   // in the unit and CLI tests).
   const Image shown = decode(automatic);
   const double gain = std::exp2(stops);

@@ -13,7 +13,7 @@
 
 #include "daemon_fixture.h"
 #include "geometry/model.h"
-#include "render/image_io.h"
+#include "render/prepare/image_io.h"
 
 namespace geodesic::test {
 namespace {

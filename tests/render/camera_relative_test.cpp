@@ -1,11 +1,11 @@
-// Camera-relative numerics (render/renderer.h, docs/numerics.md): a scene moved far from the
+// Camera-relative numerics (render/device/renderer.h, docs/numerics.md): a scene moved far from the
 // origin by an isometry renders the image it renders at the origin, within the seed-to-seed
 // noise, with no non-finite sample: H3 up to 20 units out (the float-only renderer had
 // fireflies from 4 and NaN at 8; composing the frame in double lost the scene from 12), E3 with
 // its contact shadow 1e6 out.
 #include <string>
 
-#include "render/render_service.h"
+#include "render/service/render_service.h"
 #include "render_fixture.h"
 #include "scene/scene_isometry.h"
 

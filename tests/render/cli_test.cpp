@@ -11,8 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "render/exposure.h"
-#include "render/image_io.h"
+#include "render/prepare/exposure.h"
+#include "render/prepare/image_io.h"
 #include "render_fixture.h"
 
 namespace geodesic::test {

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "geometry/model.h"
-#include "render/emitters.h"
+#include "render/prepare/emitters.h"
 #include "render_fixture.h"
 
 namespace geodesic::test {

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "geometry/model.h"
-#include "render/emitters.h"
+#include "render/prepare/emitters.h"
 #include "render_fixture.h"
 
 namespace geodesic::test {
@@ -140,7 +140,7 @@ void expect_point_light_images_sum(const std::string& geometry, const std::strin
 
 // In S3 both ways round where the group lacks the antipodal map (L(11, 3)); where it holds it
 // (the Poincare space) the long way round meets the patch's own copy at the antipode, and
-// light sampling leaves it out (server/render/emitters.cpp).
+// light sampling leaves it out (server/render/prepare/emitters.cpp).
 TEST(PointLight, ItsImagesInAQuotientSumToTheirClosedForm) {
   expect_point_light_images_sum("euclidean", R"({"type": "torus", "size": 1.5})", {0.3, -0.2, 0.4}, 4);
   expect_point_light_images_sum("spherical", R"({"type": "lens", "p": 11, "q": 3, "max_crossings": 48})",

@@ -1,4 +1,4 @@
-// Per-scene pipelines (render/pipeline_features.h): what each bundled scene compiles in, that
+// Per-scene pipelines (render/prepare/pipeline_features.h): what each bundled scene compiles in, that
 // the dumped shaders leave out what a scene does not use, that every bundled scene renders the
 // same image with its specialised pipeline as with the all-features one, and that the
 // pipeline cache makes a second renderer (or a second process) compile nothing.
@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "render/pipeline_cache.h"
-#include "render/scene_bindings.h"
-#include "render/shader_dump.h"
+#include "render/device/pipeline_cache.h"
+#include "render/prepare/scene_bindings.h"
+#include "render/device/shader_dump.h"
 #include "render_fixture.h"
 
 namespace geodesic::test {

@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
-#include "render/gpu_buffer.h"
-#include "render/pipeline_features.h"
-#include "render/shader_compiler.h"
-#include "render/shader_module.h"
-#include "render/vulkan_context.h"
+#include "render/device/gpu_buffer.h"
+#include "render/prepare/pipeline_features.h"
+#include "render/prepare/shader_compiler.h"
+#include "render/device/shader_module.h"
+#include "render/device/vulkan_context.h"
 
 namespace geodesic::test {
 

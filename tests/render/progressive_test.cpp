@@ -1,10 +1,10 @@
 // Progressive rendering as the daemon uses it: error estimates from the two halves, new views
-// and reduced resolutions, and passes cut into slices (render/pass_slicer.h).
+// and reduced resolutions, and passes cut into slices (render/service/pass_slicer.h).
 #include <cmath>
 #include <vector>
 
-#include "render/pass_slicer.h"
-#include "render/relative_error.h"
+#include "render/service/pass_slicer.h"
+#include "render/prepare/relative_error.h"
 #include "render_fixture.h"
 
 namespace geodesic::test {

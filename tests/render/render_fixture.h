@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "render/renderer.h"
+#include "render/device/renderer.h"
 #include "scene/scene_loader.h"
 
 namespace geodesic::test {

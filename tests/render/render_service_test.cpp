@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "render/render_service.h"
+#include "render/service/render_service.h"
 #include "render_fixture.h"
 
 namespace geodesic::test {
@@ -182,7 +182,7 @@ TEST(RenderService, ANewViewsFirstFrameDoesNotWaitForTheRound) {
   for (const auto id : ids) service.close_session(id);
 }
 
-// Frames are encoded off the render thread (render/frame_encoder.h): a session's frames still
+// Frames are encoded off the render thread (render/service/frame_encoder.h): a session's frames still
 // come numbered one after another, none after close_session has returned, while the session
 // beside it streams on.
 TEST(RenderService, FramesComeInOrderAndNoneAfterTheSessionIsClosed) {

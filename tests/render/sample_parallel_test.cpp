@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "render/accumulation_file.h"
+#include "render/prepare/accumulation_file.h"
 #include "render_fixture.h"
 
 namespace geodesic::test {

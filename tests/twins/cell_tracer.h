@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "render/cells.h"
+#include "render/prepare/cells.h"
 
 namespace geodesic {
 

@@ -1,5 +1,5 @@
-// The stop conditions of a render and the series it records (server/render/convergence.h).
-#include "render/convergence.h"
+// The stop conditions of a render and the series it records (server/render/prepare/convergence.h).
+#include "render/prepare/convergence.h"
 
 #include <gtest/gtest.h>
 

@@ -1,11 +1,11 @@
-// Exposure (render/exposure.h): the automatic exposure against its closed form, and the
+// Exposure (render/prepare/exposure.h): the automatic exposure against its closed form, and the
 // exposure's text and JSON forms with their refusals.
 #include <cmath>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "render/exposure.h"
+#include "render/prepare/exposure.h"
 #include "scene/render_settings_loader.h"
 
 namespace geodesic {

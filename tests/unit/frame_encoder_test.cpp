@@ -1,4 +1,4 @@
-// FrameEncoder (render/frame_encoder.h), the sessions' frames off the render thread: a frame is
+// FrameEncoder (render/service/frame_encoder.h), the sessions' frames off the render thread: a frame is
 // its pass resolved and encoded as the render thread did it before, frames come in order, a
 // pass that arrives while the previous one waits replaces it, a new exposure encodes the last
 // pass again, and a closed stream delivers nothing more.
@@ -11,11 +11,11 @@
 
 #include <gtest/gtest.h>
 
-#include "render/accumulation_file.h"
-#include "render/exposure.h"
-#include "render/frame_encoder.h"
-#include "render/jpeg_encoder.h"
-#include "render/relative_error.h"
+#include "render/prepare/accumulation_file.h"
+#include "render/prepare/exposure.h"
+#include "render/service/frame_encoder.h"
+#include "render/prepare/jpeg_encoder.h"
+#include "render/prepare/relative_error.h"
 
 namespace geodesic {
 namespace {

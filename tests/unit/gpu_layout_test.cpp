@@ -14,12 +14,12 @@
 #include <string>
 #include <vector>
 
-#include "render/emitters.h"
-#include "render/frame_uniforms.h"
-#include "render/packed_scene.h"
-#include "render/pipeline_features.h"
-#include "render/scene_bindings.h"
-#include "render/shader_compiler.h"
+#include "render/prepare/emitters.h"
+#include "render/prepare/frame_uniforms.h"
+#include "render/prepare/packed_scene.h"
+#include "render/prepare/pipeline_features.h"
+#include "render/prepare/scene_bindings.h"
+#include "render/prepare/shader_compiler.h"
 
 namespace geodesic::test {
 namespace {

@@ -6,14 +6,18 @@
 set -euo pipefail
 repo=$(cd "$(dirname "$0")/../.." && pwd)
 build=${1:?usage: layers_test.sh BUILD_DIR CXX} cxx=${2:?}
-layers=(geometry scene render jobs net cli)
+layers=(geometry scene prepare device service jobs net cli)
+declare -A folder=([geometry]=geometry [scene]=scene [prepare]=render/prepare
+                   [device]=render/device [service]=render/service [jobs]=jobs [net]=net [cli]=cli)
 compiles() {  # layer header
   echo "#include \"$2\"" | "$cxx" -std=c++20 -fsyntax-only -I"$build/layers/$1" \
     -x c++ - 2>"$build/layers/last.err"
 }
 # A header of each folder that includes nothing of the layers above it.
-declare -A header=([geometry]=geometry/vec.h [scene]=scene/scene.h [render]=render/image.h
-                   [jobs]=jobs/job.h [net]=net/http_response.h [cli]=cli/progress_bar.h)
+declare -A header=([geometry]=geometry/vec.h [scene]=scene/scene.h
+                   [prepare]=render/prepare/image.h [device]=render/device/gpu_buffer.h
+                   [service]=render/service/render_service.h [jobs]=jobs/job.h
+                   [net]=net/http_response.h [cli]=cli/progress_bar.h)
 for i in "${!layers[@]}"; do
   layer=${layers[$i]}
   [ -d "$build/layers/$layer" ] || { echo "layers: no include root for $layer" >&2; exit 1; }
@@ -37,8 +41,8 @@ done
 # And the sources as they are: no file includes a layer above its own.
 for i in "${!layers[@]}"; do
   for above in "${layers[@]:$((i + 1))}"; do
-    if grep -rn "#include \"$above/" "$repo/server/${layers[$i]}"; then
-      echo "layers: server/${layers[$i]} includes $above/" >&2; exit 1
+    if grep -rn "#include \"${folder[$above]}/" "$repo/server/${folder[${layers[$i]}]}"; then
+      echo "layers: server/${folder[${layers[$i]}]} includes ${folder[$above]}/" >&2; exit 1
     fi
   done
 done

@@ -10,7 +10,7 @@
 #include "geometry/model.h"
 #include "geometry/sampling.h"
 #include "twins/bsdf.h"
-#include "render/emitters.h"
+#include "render/prepare/emitters.h"
 
 namespace geodesic {
 namespace {

@@ -1,7 +1,7 @@
-// The error measure (server/render/relative_error.h): the relative RMSE against a reference,
+// The error measure (server/render/prepare/relative_error.h): the relative RMSE against a reference,
 // and its estimate from two halves of the samples, checked on synthetic pixels whose noise is
 // known.
-#include "render/relative_error.h"
+#include "render/prepare/relative_error.h"
 
 #include <gtest/gtest.h>
 

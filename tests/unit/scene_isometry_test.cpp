@@ -80,7 +80,7 @@ INSTANTIATE_TEST_SUITE_P(Geometries, MovedScene,
                                            Case{GeometryKind::Hyperbolic, 6},
                                            Case{GeometryKind::Spherical, 2.5}));
 
-// The scene seen from its camera, as the renderer moves it (render/renderer.cpp): exponential
+// The scene seen from its camera, as the renderer moves it (render/device/renderer.cpp): exponential
 // coordinates of every point in the camera's frame.
 std::vector<Vec3> seen_from_camera(const Scene& scene) {
   const Scene seen = moved_scene(scene, WideIsometry(scene.geometry, scene.camera.pose).inverse());

@@ -10,7 +10,7 @@
 
 #include <stdlib.h>
 
-#include "render/emitters.h"
+#include "render/prepare/emitters.h"
 #include "scene_document.h"
 
 namespace geodesic {

@@ -1,11 +1,11 @@
-// The render thread's rota (render/session_rota.h): round-robin, and a session someone waits
+// The render thread's rota (render/service/session_rota.h): round-robin, and a session someone waits
 // for in between, every other slice at most.
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <vector>
 
-#include "render/session_rota.h"
+#include "render/service/session_rota.h"
 
 namespace geodesic::test {
 namespace {

@@ -1,4 +1,4 @@
-// The order primitives are packed in (render/spatial_order.h): a permutation whose halving at
+// The order primitives are packed in (render/prepare/spatial_order.h): a permutation whose halving at
 // every (first + last) / 2, as Mesa lavapipe's acceleration-structure build halves it, builds a
 // tree of small SAH cost; and the packed scene keeps every triangle and sphere with its own data.
 #include <gtest/gtest.h>
@@ -9,8 +9,8 @@
 #include <random>
 #include <set>
 
-#include "render/packed_scene.h"
-#include "render/spatial_order.h"
+#include "render/prepare/packed_scene.h"
+#include "render/prepare/spatial_order.h"
 #include "scene/scene_loader.h"
 
 namespace geodesic {

@@ -1,4 +1,4 @@
-// Edge-tube culling (render/tube_culling.h): in every bundled quotient scene with edge tubes,
+// Edge-tube culling (render/prepare/tube_culling.h): in every bundled quotient scene with edge tubes,
 // each tube finds the two faces that hold its axis, the shader's lookup by pairs of near faces
 // (tubes_to_test) finds exactly the tubes on such pairs, and no chart segment that meets a tube
 // has it culled. Segments run face to face through the domain, most of them starting beside
@@ -13,9 +13,9 @@
 #include <string>
 
 #include "geometry/capsule.h"
-#include "render/cells.h"
-#include "render/packed_scene.h"
-#include "render/tube_culling.h"
+#include "render/prepare/cells.h"
+#include "render/prepare/packed_scene.h"
+#include "render/prepare/tube_culling.h"
 #include "scene/scene_loader.h"
 
 namespace geodesic {

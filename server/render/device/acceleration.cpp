@@ -1,4 +1,4 @@
-#include "render/acceleration.h"
+#include "render/device/acceleration.h"
 
 #include <utility>
 #include <vector>

@@ -5,8 +5,8 @@
 // shader-binding-table offset the kind (0 = triangles, 1 = spheres).
 #pragma once
 
-#include "render/gpu_buffer.h"
-#include "render/packed_scene.h"
+#include "render/device/gpu_buffer.h"
+#include "render/prepare/packed_scene.h"
 
 #include <vector>
 

@@ -1,4 +1,4 @@
-#include "render/fault_injection.h"
+#include "render/device/fault_injection.h"
 
 #include <atomic>
 #include <cstdlib>

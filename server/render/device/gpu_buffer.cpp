@@ -1,4 +1,4 @@
-#include "render/gpu_buffer.h"
+#include "render/device/gpu_buffer.h"
 
 #include <utility>
 

@@ -7,7 +7,7 @@
 #include <cstring>
 #include <vector>
 
-#include "render/vulkan_context.h"
+#include "render/device/vulkan_context.h"
 
 namespace geodesic {
 

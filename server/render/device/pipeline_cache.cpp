@@ -1,4 +1,4 @@
-#include "render/pipeline_cache.h"
+#include "render/device/pipeline_cache.h"
 
 #include <chrono>
 #include <cstdio>
@@ -6,7 +6,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "render/vulkan_context.h"
+#include "render/device/vk_check.h"
 
 namespace geodesic {
 namespace {

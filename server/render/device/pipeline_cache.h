@@ -17,9 +17,9 @@
 
 #include <vulkan/vulkan.h>
 
-#include "render/pipeline_features.h"
-#include "render/scene_layout.h"
-#include "render/shader_compiler.h"
+#include "render/prepare/pipeline_features.h"
+#include "render/device/scene_layout.h"
+#include "render/prepare/shader_compiler.h"
 
 namespace geodesic {
 

@@ -1,7 +1,7 @@
 // Back end 1: the integrator as a compute shader tracing with ray queries.
-#include "render/pipeline_cache.h"
-#include "render/shader_module.h"
-#include "render/trace_backend.h"
+#include "render/device/pipeline_cache.h"
+#include "render/device/shader_module.h"
+#include "render/device/trace_backend.h"
 
 namespace geodesic {
 namespace {

@@ -4,9 +4,9 @@
 #include <cstring>
 #include <vector>
 
-#include "render/gpu_buffer.h"
-#include "render/shader_module.h"
-#include "render/trace_backend.h"
+#include "render/device/gpu_buffer.h"
+#include "render/device/shader_module.h"
+#include "render/device/trace_backend.h"
 
 namespace geodesic {
 namespace {

@@ -1,10 +1,10 @@
-#include "render/renderer.h"
+#include "render/device/renderer.h"
 
 #include <stdexcept>
 #include <string>
 
-#include "render/accumulation_file.h"
-#include "render/relative_error.h"
+#include "render/prepare/accumulation_file.h"
+#include "render/prepare/relative_error.h"
 #include "scene/scene_isometry.h"
 
 namespace geodesic {

@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "geometry/wide_isometry.h"
-#include "render/cells.h"
-#include "render/image.h"
-#include "render/scene_resources.h"
-#include "render/trace_backend.h"
+#include "render/prepare/cells.h"
+#include "render/prepare/image.h"
+#include "render/device/scene_resources.h"
+#include "render/device/trace_backend.h"
 
 namespace geodesic {
 
@@ -31,7 +31,7 @@ class Renderer {
   void add_samples(uint32_t samples);
   // A slice of a pass: adds `samples` samples (numbered from samples()) to the pixels of
   // `region` only; finish_pass(samples) counts them once every pixel has had them
-  // (render/pass_slicer.h cuts passes so).
+  // (render/service/pass_slicer.h cuts passes so).
   void render_region(uint32_t samples, const PixelRegion& region);
   void finish_pass(uint32_t samples) { samples_ += samples; }
   uint32_t samples() const { return samples_; }
@@ -49,7 +49,7 @@ class Renderer {
   // (in binary128 in H3: scene/scene_isometry.h) before anything is stored in float, so an
   // image does not depend on where the whole scene sits (docs/numerics.md). Poses in and out are the scene's. True when `camera_pose`
   // has strayed so far from the frame's centre that a renderer built there should replace
-  // this one (a walking camera: render/render_service.h).
+  // this one (a walking camera: render/service/render_service.h).
   bool frame_outgrown(const Mat4& camera_pose) const;
   void set_max_depth(int max_depth);
   int width() const { return int(resources_.width()); }

@@ -1,8 +1,8 @@
-#include "render/scene_layout.h"
+#include "render/device/scene_layout.h"
 
-#include "render/frame_uniforms.h"
-#include "render/scene_bindings.h"
-#include "render/vulkan_context.h"
+#include "render/prepare/frame_uniforms.h"
+#include "render/prepare/scene_bindings.h"
+#include "render/device/vulkan_context.h"
 
 namespace geodesic {
 

@@ -1,5 +1,5 @@
 // The descriptor set layout and pipeline layout of a scene's shaders: one set holding the
-// bindings the pipeline's features use (render/scene_bindings.h), and the SampleRange push
+// bindings the pipeline's features use (render/prepare/scene_bindings.h), and the SampleRange push
 // constant. Layouts made from the same bindings are compatible, so a pipeline cached for one
 // scene binds another scene's descriptor set.
 #pragma once

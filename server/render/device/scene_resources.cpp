@@ -1,6 +1,6 @@
-#include "render/scene_resources.h"
+#include "render/device/scene_resources.h"
 
-#include "render/scene_bindings.h"
+#include "render/prepare/scene_bindings.h"
 
 #include <cmath>
 #include <cstring>

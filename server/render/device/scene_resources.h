@@ -5,12 +5,12 @@
 
 #include <memory>
 
-#include "render/acceleration.h"
-#include "render/frame_uniforms.h"
-#include "render/gpu_buffer.h"
-#include "render/packed_scene.h"
-#include "render/pipeline_features.h"
-#include "render/scene_layout.h"
+#include "render/device/acceleration.h"
+#include "render/prepare/frame_uniforms.h"
+#include "render/device/gpu_buffer.h"
+#include "render/prepare/packed_scene.h"
+#include "render/prepare/pipeline_features.h"
+#include "render/device/scene_layout.h"
 #include "scene/scene.h"
 
 namespace geodesic {

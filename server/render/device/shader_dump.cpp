@@ -1,9 +1,9 @@
-#include "render/shader_dump.h"
+#include "render/device/shader_dump.h"
 
 #include <fstream>
 #include <stdexcept>
 
-#include "render/shader_compiler.h"
+#include "render/prepare/shader_compiler.h"
 
 namespace geodesic {
 namespace {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "render/renderer.h"
+#include "render/device/renderer.h"
 
 namespace geodesic {
 

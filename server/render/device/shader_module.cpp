@@ -1,4 +1,4 @@
-#include "render/shader_module.h"
+#include "render/device/shader_module.h"
 
 namespace geodesic {
 

@@ -1,11 +1,11 @@
-// A VkShaderModule made from SPIR-V words (render/shader_compiler.h compiles them), destroyed
+// A VkShaderModule made from SPIR-V words (render/prepare/shader_compiler.h compiles them), destroyed
 // with its owner: pipelines keep what they need after creation.
 #pragma once
 
 #include <cstdint>
 #include <span>
 
-#include "render/vulkan_context.h"
+#include "render/device/vulkan_context.h"
 
 namespace geodesic {
 

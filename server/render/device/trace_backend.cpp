@@ -1,4 +1,4 @@
-#include "render/trace_backend.h"
+#include "render/device/trace_backend.h"
 
 namespace geodesic {
 

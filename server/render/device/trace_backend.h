@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "render/pipeline_cache.h"
-#include "render/scene_resources.h"
+#include "render/device/pipeline_cache.h"
+#include "render/device/scene_resources.h"
 
 namespace geodesic {
 

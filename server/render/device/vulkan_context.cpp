@@ -1,6 +1,6 @@
-#include "render/vulkan_context.h"
+#include "render/device/vulkan_context.h"
 
-#include "render/pipeline_cache.h"
+#include "render/device/pipeline_cache.h"
 
 #include <algorithm>
 #include <cctype>
@@ -8,7 +8,7 @@
 #include <mutex>
 #include <set>
 
-#include "render/fault_injection.h"
+#include "render/device/fault_injection.h"
 
 namespace geodesic {
 namespace {
@@ -132,27 +132,6 @@ std::optional<size_t> choose(const std::vector<DeviceDescription>& devices,
 }
 
 }  // namespace
-
-namespace {
-
-// The results a render service has to tell apart by name; others by number.
-std::string result_name(VkResult result) {
-  switch (result) {
-    case VK_ERROR_DEVICE_LOST: return "VK_ERROR_DEVICE_LOST";
-    case VK_ERROR_OUT_OF_DEVICE_MEMORY: return "VK_ERROR_OUT_OF_DEVICE_MEMORY";
-    case VK_ERROR_OUT_OF_HOST_MEMORY: return "VK_ERROR_OUT_OF_HOST_MEMORY";
-    case VK_ERROR_INITIALIZATION_FAILED: return "VK_ERROR_INITIALIZATION_FAILED";
-    case VK_TIMEOUT: return "VK_TIMEOUT";
-    default: return "VkResult " + std::to_string(result);
-  }
-}
-
-}  // namespace
-
-void vk_check(VkResult result, const char* what) {
-  if (result != VK_SUCCESS)
-    throw VulkanError(std::string(what) + " failed (" + result_name(result) + ")", result);
-}
 
 std::vector<DeviceDescription> VulkanContext::list_devices() {
   VkInstance instance = create_instance();

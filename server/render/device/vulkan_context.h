@@ -16,20 +16,9 @@
 
 #include <vulkan/vulkan.h>
 
+#include "render/device/vk_check.h"
+
 namespace geodesic {
-
-class VulkanError : public std::runtime_error {
- public:
-  explicit VulkanError(const std::string& message, VkResult result = VK_ERROR_UNKNOWN)
-      : std::runtime_error(message), result_(result) {}
-  VkResult result() const { return result_; }
-
- private:
-  VkResult result_;
-};
-
-// Throws VulkanError naming the call and the result when a Vulkan function fails.
-void vk_check(VkResult result, const char* what);
 
 // What `geodesic devices` prints and device selection decides on.
 struct DeviceDescription {
@@ -85,7 +74,7 @@ class VulkanContext {
     return acceleration_properties_;
   }
 
-  // The pipelines built on this device (render/pipeline_cache.h).
+  // The pipelines built on this device (render/device/pipeline_cache.h).
   PipelineCache& pipeline_cache() { return *pipeline_cache_; }
 
   uint32_t find_memory_type(uint32_t type_bits, VkMemoryPropertyFlags wanted) const;

@@ -1,10 +1,10 @@
-#include "render/accumulation_file.h"
+#include "render/prepare/accumulation_file.h"
 
 #include <algorithm>
 #include <stdexcept>
 
-#include "render/exr_file.h"
-#include "render/relative_error.h"
+#include "render/prepare/exr_file.h"
+#include "render/prepare/relative_error.h"
 
 namespace geodesic {
 namespace {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "render/image.h"
+#include "render/prepare/image.h"
 
 namespace geodesic {
 

@@ -1,4 +1,4 @@
-#include "render/cells.h"
+#include "render/prepare/cells.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "render/chart_bounds.h"
+#include "render/prepare/chart_bounds.h"
 
 #include <algorithm>
 #include <cmath>

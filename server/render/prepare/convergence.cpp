@@ -1,4 +1,4 @@
-#include "render/convergence.h"
+#include "render/prepare/convergence.h"
 
 #include <algorithm>
 #include <cmath>

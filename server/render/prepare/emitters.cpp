@@ -1,4 +1,4 @@
-#include "render/emitters.h"
+#include "render/prepare/emitters.h"
 
 #include <algorithm>
 #include <cmath>

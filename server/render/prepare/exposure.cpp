@@ -1,4 +1,4 @@
-#include "render/exposure.h"
+#include "render/prepare/exposure.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "render/image.h"
+#include "render/prepare/image.h"
 #include "scene/scene.h"
 
 namespace geodesic {

@@ -1,4 +1,4 @@
-#include "render/exr_file.h"
+#include "render/prepare/exr_file.h"
 
 #include <algorithm>
 #include <stdexcept>

@@ -8,7 +8,7 @@ namespace geodesic {
 
 using gpu::FrameUniforms;  // the per-render uniform block (std140)
 // Which samples one dispatch adds, to which pixels (the push constants): a pass over a large
-// image is split into slices (render/pass_slicer.h).
+// image is split into slices (render/service/pass_slicer.h).
 using gpu::SampleRange;
 
 }  // namespace geodesic

@@ -1,4 +1,4 @@
-#include "render/image_io.h"
+#include "render/prepare/image_io.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +15,7 @@
 #include <png.h>
 #include <turbojpeg.h>
 
-#include "render/exr_file.h"
+#include "render/prepare/exr_file.h"
 
 namespace geodesic {
 

@@ -4,7 +4,7 @@
 
 #include <filesystem>
 
-#include "render/image.h"
+#include "render/prepare/image.h"
 
 namespace geodesic {
 

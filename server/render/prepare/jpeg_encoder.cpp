@@ -1,4 +1,4 @@
-#include "render/jpeg_encoder.h"
+#include "render/prepare/jpeg_encoder.h"
 
 #include <algorithm>
 #include <stdexcept>

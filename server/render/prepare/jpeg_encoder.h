@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "render/image.h"
+#include "render/prepare/image.h"
 
 namespace geodesic {
 
@@ -14,7 +14,7 @@ class JpegEncoder {
   JpegEncoder(const JpegEncoder&) = delete;
   JpegEncoder& operator=(const JpegEncoder&) = delete;
 
-  // Scales (the exposure, render/exposure.h), tone-maps (sRGB, clamped) and encodes; quality
+  // Scales (the exposure, render/prepare/exposure.h), tone-maps (sRGB, clamped) and encodes; quality
   // 1-100. Throws std::runtime_error.
   std::vector<unsigned char> encode(const Image& image, int quality = 85, float scale = 1);
 

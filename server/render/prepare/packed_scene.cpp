@@ -1,11 +1,11 @@
-#include "render/packed_scene.h"
+#include "render/prepare/packed_scene.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
-#include "render/chart_bounds.h"
-#include "render/tube_culling.h"
+#include "render/prepare/chart_bounds.h"
+#include "render/prepare/tube_culling.h"
 
 namespace geodesic {
 namespace {
@@ -99,7 +99,7 @@ void pack_cell_spheres(const Scene& scene, const Cell& cell, uint32_t cell_index
 // by the two faces that hold the axis, each first face given its offset and the set of second
 // faces, so that a segment finds the tube on a pair of near faces at once; a tube without two
 // such faces, or on a pair that already has one, goes last, always tested
-// (render/tube_culling.h). Fills the cell's tube fields.
+// (render/prepare/tube_culling.h). Fills the cell's tube fields.
 void pack_cell_tubes(const Scene& scene, const Cell& cell, GpuCell& packed, PackedScene& out) {
   const GeometryKind k = scene.geometry;
   std::vector<GpuTube> tubes;
@@ -142,7 +142,7 @@ void pack_cell_tubes(const Scene& scene, const Cell& cell, GpuCell& packed, Pack
 }
 
 // A cell's triangles (from `first`) and its sphere refs (from `first_ref`) in the index-split
-// order of their chart boxes (render/spatial_order.h). Triangle vertices are not shared, so
+// order of their chart boxes (render/prepare/spatial_order.h). Triangle vertices are not shared, so
 // positions and normals move with their triangle and the indices stay 0, 1, 2, ...
 void order_spatially(uint32_t first, uint32_t first_ref, PackedScene& out) {
   const auto permute = [](auto& items, size_t begin, size_t stride,

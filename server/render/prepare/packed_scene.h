@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "common/gpu_types.h"
-#include "render/cells.h"
-#include "render/emitters.h"
-#include "render/spatial_order.h"
+#include "render/prepare/cells.h"
+#include "render/prepare/emitters.h"
+#include "render/prepare/spatial_order.h"
 #include "scene/scene.h"
 
 namespace geodesic {
@@ -64,7 +64,7 @@ struct PackedScene {
 PackedScene pack_scene(const Scene& scene);
 
 // The chart boxes of the packed triangles from `first` on, which packing orders them by
-// (render/spatial_order.h).
+// (render/prepare/spatial_order.h).
 std::vector<PrimitiveBox> triangle_boxes(const PackedScene& packed, size_t first = 0);
 
 }  // namespace geodesic

@@ -1,9 +1,9 @@
-#include "render/pipeline_features.h"
+#include "render/prepare/pipeline_features.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "render/scene_bindings.h"
+#include "render/prepare/scene_bindings.h"
 
 namespace geodesic {
 namespace {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "render/packed_scene.h"
+#include "render/prepare/packed_scene.h"
 #include "scene/scene.h"
 
 namespace geodesic {

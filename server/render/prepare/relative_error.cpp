@@ -1,4 +1,4 @@
-#include "render/relative_error.h"
+#include "render/prepare/relative_error.h"
 
 #include <algorithm>
 #include <cmath>

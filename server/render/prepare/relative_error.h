@@ -5,7 +5,7 @@
 
 #include <cstddef>
 
-#include "render/image.h"
+#include "render/prepare/image.h"
 
 namespace geodesic {
 

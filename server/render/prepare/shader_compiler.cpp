@@ -1,4 +1,4 @@
-#include "render/shader_compiler.h"
+#include "render/prepare/shader_compiler.h"
 
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>

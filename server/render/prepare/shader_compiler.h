@@ -1,5 +1,5 @@
 // GLSL -> SPIR-V at run time with glslang, so each scene's pipeline is compiled with its own
-// feature defines (render/pipeline_features.h) instead of one build-time shader per geometry.
+// feature defines (render/prepare/pipeline_features.h) instead of one build-time shader per geometry.
 #pragma once
 
 #include <cstdint>

@@ -1,4 +1,4 @@
-#include "render/spatial_order.h"
+#include "render/prepare/spatial_order.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-#include "render/tube_culling.h"
+#include "render/prepare/tube_culling.h"
 
 #include <algorithm>
 #include <bit>

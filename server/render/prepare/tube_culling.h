@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "common/gpu_types.h"
-#include "render/cells.h"
+#include "render/prepare/cells.h"
 
 namespace geodesic {
 

@@ -1,4 +1,4 @@
-#include "render/frame_encoder.h"
+#include "render/service/frame_encoder.h"
 
 #include <algorithm>
 #include <atomic>
@@ -7,10 +7,10 @@
 #include <optional>
 #include <utility>
 
-#include "render/accumulation_file.h"
-#include "render/exposure.h"
-#include "render/jpeg_encoder.h"
-#include "render/relative_error.h"
+#include "render/prepare/accumulation_file.h"
+#include "render/prepare/exposure.h"
+#include "render/prepare/jpeg_encoder.h"
+#include "render/prepare/relative_error.h"
 
 namespace geodesic {
 namespace {

@@ -1,4 +1,4 @@
-#include "render/pass_slicer.h"
+#include "render/service/pass_slicer.h"
 
 #include <algorithm>
 #include <chrono>

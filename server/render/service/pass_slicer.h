@@ -12,7 +12,7 @@
 
 #include <cstdint>
 
-#include "render/renderer.h"
+#include "render/device/renderer.h"
 
 namespace geodesic {
 

@@ -1,12 +1,12 @@
-#include "render/render_service.h"
+#include "render/service/render_service.h"
 
 #include <algorithm>
 #include <filesystem>
 #include <stdexcept>
 #include <utility>
 
-#include "render/pipeline_cache.h"
-#include "render/render_service_impl.h"
+#include "render/device/pipeline_cache.h"
+#include "render/service/render_service_impl.h"
 #include "scene/camera_motion.h"
 
 namespace geodesic {

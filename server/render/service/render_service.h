@@ -112,7 +112,7 @@ class RenderService {
   RenderService(const RenderService&) = delete;
   RenderService& operator=(const RenderService&) = delete;
 
-  // Keeps compiled pipelines in `dir` too (render/pipeline_cache.h), so that a restarted daemon
+  // Keeps compiled pipelines in `dir` too (render/device/pipeline_cache.h), so that a restarted daemon
   // compiles nothing it compiled before.
   void use_pipeline_cache(const std::filesystem::path& dir);
 
@@ -150,7 +150,7 @@ class RenderService {
   SceneInfo install_scene(SessionId id, PreparedScene&& scene);
   void move_camera(SessionId id, const CameraMotion& motion);
   // In a space without a quotient the renderer works in a frame centred on the camera it was
-  // built at (render/renderer.h). True when `motion` takes the camera so far from it that a
+  // built at (render/device/renderer.h). True when `motion` takes the camera so far from it that a
   // renderer built at the moved camera should take over: prepare_move builds it, beside the
   // rendering; move the camera, then rebase(id, prepared).
   bool move_outgrows_frame(SessionId id, const CameraMotion& motion) const;
@@ -180,7 +180,7 @@ class RenderService {
   bool run_background(const std::function<void(VulkanContext&)>& work);
   // Runs `work(device)` on the calling thread with the service's current device at once,
   // beside the rendering and outside the device lock: for building and freeing renderers, which
-  // the device allows from any thread (render/vulkan_context.h). Returns false, without running
+  // the device allows from any thread (render/device/vulkan_context.h). Returns false, without running
   // `work`, once the service is stopping.
   bool run_beside(const std::function<void(VulkanContext&)>& work) const;
 

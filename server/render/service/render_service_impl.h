@@ -15,12 +15,12 @@
 #include <thread>
 #include <vector>
 
-#include "render/frame_encoder.h"
-#include "render/render_service.h"
-#include "render/render_session.h"
-#include "render/renderer.h"
-#include "render/session_rota.h"
-#include "render/vulkan_context.h"
+#include "render/service/frame_encoder.h"
+#include "render/service/render_service.h"
+#include "render/service/render_session.h"
+#include "render/device/renderer.h"
+#include "render/service/session_rota.h"
+#include "render/device/vulkan_context.h"
 
 namespace geodesic {
 

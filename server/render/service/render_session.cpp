@@ -1,4 +1,4 @@
-#include "render/render_session.h"
+#include "render/service/render_session.h"
 
 #include <algorithm>
 #include <cmath>

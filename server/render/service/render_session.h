@@ -1,6 +1,6 @@
-// One interactive session of the render service (render/render_service.h): its scene and
+// One interactive session of the render service (render/service/render_service.h): its scene and
 // renderer, camera, view and pass slicer, and the stream its frames go out on after each pass
-// (encoded there, off the render thread: render/frame_encoder.h). Not thread-safe: the
+// (encoded there, off the render thread: render/service/frame_encoder.h). Not thread-safe: the
 // service's lock guards it; only the render thread renders it.
 #pragma once
 
@@ -9,9 +9,9 @@
 #include <memory>
 #include <string>
 
-#include "render/frame_encoder.h"
-#include "render/pass_slicer.h"
-#include "render/render_service.h"
+#include "render/service/frame_encoder.h"
+#include "render/service/pass_slicer.h"
+#include "render/service/render_service.h"
 
 namespace geodesic {
 

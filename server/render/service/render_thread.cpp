@@ -1,8 +1,8 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "render/pipeline_cache.h"
-#include "render/render_service_impl.h"
+#include "render/device/pipeline_cache.h"
+#include "render/service/render_service_impl.h"
 
 namespace geodesic {
 namespace {

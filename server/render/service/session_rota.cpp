@@ -1,4 +1,4 @@
-#include "render/session_rota.h"
+#include "render/service/session_rota.h"
 
 namespace geodesic {
 

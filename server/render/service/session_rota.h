@@ -8,7 +8,7 @@
 #include <map>
 #include <memory>
 
-#include "render/render_session.h"
+#include "render/service/render_session.h"
 
 namespace geodesic {
 
