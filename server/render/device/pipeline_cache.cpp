@@ -55,10 +55,15 @@ PipelineCache::~PipelineCache() {
 }
 
 void PipelineCache::set_directory(const std::filesystem::path& dir) {
-  std::lock_guard lock(mutex_);
+  std::unique_lock lock(mutex_);
+  wait_for_builds(lock);
   directory_ = dir;
   if (!dir.empty()) std::filesystem::create_directories(dir);
   reset_driver_cache();
+}
+
+void PipelineCache::wait_for_builds(std::unique_lock<std::mutex>& lock) {
+  built_.wait(lock, [&] { return building_.empty(); });
 }
 
 // A fresh driver cache, seeded from the directory's blob when there is one. The driver checks
@@ -79,14 +84,16 @@ void PipelineCache::reset_driver_cache() {
   driver_cache_ = fresh;
 }
 
-Spirv PipelineCache::spirv_locked(const std::string& entry, const PipelineFeatures& features) {
+Spirv PipelineCache::spirv(const std::string& entry, const PipelineFeatures& features,
+                           const std::filesystem::path& dir) {
   const std::string name = entry + "\n" + joined(features.defines(), "\n") + "\n" +
                            shader_sources_digest();
   const std::string key = fnv1a_hex(name.data(), name.size());
-  if (auto it = spirv_.find(key); it != spirv_.end()) return it->second;
-
-  const auto path = directory_.empty() ? std::filesystem::path()
-                                       : directory_ / (key + ".spv");
+  {
+    std::lock_guard lock(mutex_);
+    if (auto it = spirv_.find(key); it != spirv_.end()) return it->second;
+  }
+  const auto path = dir.empty() ? std::filesystem::path() : dir / (key + ".spv");
   std::vector<uint32_t> words;
   if (!path.empty()) {
     // Magic, the payload's digest, then the SPIR-V; anything else is recompiled.
@@ -98,12 +105,11 @@ Spirv PipelineCache::spirv_locked(const std::string& entry, const PipelineFeatur
             fnv1a_hex(bytes.data() + header, bytes.size() - header)) {
       words.resize((bytes.size() - header) / 4);
       std::memcpy(words.data(), bytes.data() + header, bytes.size() - header);
-      ++stats_.spirv_disk_hits;
     }
   }
-  if (words.empty()) {
+  const bool from_disk = !words.empty();
+  if (!from_disk) {
     words = compile_shader(entry, features.defines()).spirv;
-    ++stats_.glsl_compiles;
     if (!path.empty()) {
       std::string file(kSpirvMagic, sizeof kSpirvMagic);
       file += fnv1a_hex(words.data(), words.size() * 4);
@@ -112,6 +118,8 @@ Spirv PipelineCache::spirv_locked(const std::string& entry, const PipelineFeatur
     }
   }
   auto shared = std::make_shared<const std::vector<uint32_t>>(std::move(words));
+  std::lock_guard lock(mutex_);
+  ++(from_disk ? stats_.spirv_disk_hits : stats_.glsl_compiles);
   spirv_[key] = shared;
   return shared;
 }
@@ -119,25 +127,57 @@ Spirv PipelineCache::spirv_locked(const std::string& entry, const PipelineFeatur
 std::shared_ptr<const CachedPipeline> PipelineCache::pipeline(
     const std::string& backend, const PipelineFeatures& features,
     const std::vector<std::string>& entries, const Builder& build) {
-  std::lock_guard lock(mutex_);
   const std::string key = backend + "|" + joined(features.defines(), " ");
+  std::promise<Built> promise;
+  std::unique_lock lock(mutex_);
   if (auto it = pipelines_.find(key); it != pipelines_.end()) {
     ++stats_.memory_hits;
     return it->second;
   }
+  if (auto it = building_.find(key); it != building_.end()) {
+    ++stats_.memory_hits;
+    const std::shared_future<Built> under_way = it->second;
+    lock.unlock();
+    return under_way.get();  // or that build's exception
+  }
+  building_[key] = promise.get_future().share();
+  lock.unlock();
+  Built built;
+  try {
+    built = build_pipeline(features, entries, build);
+  } catch (...) {
+    lock.lock();
+    building_.erase(key);
+    promise.set_exception(std::current_exception());
+    built_.notify_all();
+    throw;
+  }
+  lock.lock();
+  ++stats_.pipeline_builds;
+  pipelines_[key] = built;
+  building_.erase(key);
+  save_driver_cache();
+  promise.set_value(built);
+  built_.notify_all();
+  return built;
+}
+
+// Outside the lock: the directory and the driver's cache stay while a build is under way
+// (set_directory and forget_pipelines wait for builds), and vkCreate*Pipelines synchronises
+// its use of a pipeline cache itself.
+PipelineCache::Built PipelineCache::build_pipeline(const PipelineFeatures& features,
+                                                   const std::vector<std::string>& entries,
+                                                   const Builder& build) {
   const auto start = std::chrono::steady_clock::now();
   std::vector<Spirv> modules;
   auto built = std::make_shared<CachedPipeline>(device_, features.bindings());
   for (const auto& entry : entries) {
-    modules.push_back(spirv_locked(entry, features));
+    modules.push_back(spirv(entry, features, directory_));
     built->spirv_bytes += modules.back()->size() * 4;
   }
   built->pipeline = build(modules, built->layout, driver_cache_);
   built->build_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  ++stats_.pipeline_builds;
-  pipelines_[key] = built;
-  save_driver_cache();
   return built;
 }
 
@@ -157,7 +197,8 @@ PipelineCacheStats PipelineCache::stats() const {
 }
 
 void PipelineCache::forget_pipelines() {
-  std::lock_guard lock(mutex_);
+  std::unique_lock lock(mutex_);
+  wait_for_builds(lock);
   pipelines_.clear();
   spirv_.clear();
   reset_driver_cache();

@@ -4,11 +4,16 @@
 //   in memory  the built VkPipeline and its layout, shared by every renderer on this device;
 //   on disk    (when a directory is set: the daemon's data directory) the SPIR-V of each
 //              shader, checked by a digest, and the driver's VkPipelineCache blob.
+// A pipeline is compiled and built outside the cache's lock: a request for another pipeline,
+// built or not, does not wait for it (a heavy job's shaders take seconds on lavapipe), and a
+// second request for the same one waits for that build instead of starting its own.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <condition_variable>
+#include <future>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -72,10 +77,18 @@ class PipelineCache {
   void forget_pipelines();
 
  private:
-  // The SPIR-V of shaders/<entry> under `features`: from memory, the directory or glslang.
-  Spirv spirv_locked(const std::string& entry, const PipelineFeatures& features);
+  using Built = std::shared_ptr<CachedPipeline>;
+  // The SPIR-V of shaders/<entry> under `features`: from memory, the directory `dir` or
+  // glslang; called without the lock.
+  Spirv spirv(const std::string& entry, const PipelineFeatures& features,
+              const std::filesystem::path& dir);
+  Built build_pipeline(const PipelineFeatures& features, const std::vector<std::string>& entries,
+                       const Builder& build);
   void save_driver_cache();
   void reset_driver_cache();
+  // Waits (holding `lock`) until no pipeline is being built: the directory and the driver's
+  // cache those builds use stay as they are meanwhile.
+  void wait_for_builds(std::unique_lock<std::mutex>& lock);
 
   VkDevice device_;
   std::string uuid_hex_;
@@ -83,7 +96,9 @@ class PipelineCache {
   std::filesystem::path directory_;
   mutable std::mutex mutex_;
   std::map<std::string, Spirv> spirv_;
-  std::map<std::string, std::shared_ptr<CachedPipeline>> pipelines_;
+  std::map<std::string, Built> pipelines_;
+  std::map<std::string, std::shared_future<Built>> building_;  // under way, by key
+  std::condition_variable built_;                                  // one of those finished
   PipelineCacheStats stats_;
 };
 
