@@ -51,11 +51,11 @@ vec3 nextEventEstimate(Surface s, LocalFrame local, vec3 n, vec3 wo, Material m,
   vec3 wi = toLocal(local, ls.direction);
   float cosI = dot(wi, n);
   if (cosI <= 0.0 || modelInner(ls.direction, s.geometricNormal) <= 0.0) return vec3(0.0);
-  vec3 f = bsdfEval(m, n, wo, wi);
-  if (max(f.r, max(f.g, f.b)) <= 0.0) return vec3(0.0);
+  BsdfValue bsdf = bsdfEvaluate(m, n, wo, wi);
+  if (max(bsdf.f.r, max(bsdf.f.g, bsdf.f.b)) <= 0.0) return vec3(0.0);
   if (occludedTowards(s, ls)) return vec3(0.0);
-  float weight = ls.point || last || lightOnly ? 1.0 : powerHeuristic(ls.pdf, bsdfPdf(m, n, wo, wi));
-  return f * cosI * ls.radiance * (weight / ls.pdf);
+  float weight = ls.point || last || lightOnly ? 1.0 : powerHeuristic(ls.pdf, bsdf.pdf);
+  return bsdf.f * cosI * ls.radiance * (weight / ls.pdf);
 }
 #endif
 

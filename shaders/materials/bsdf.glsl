@@ -23,19 +23,24 @@ bool hasSmoothLobe(Material m) { return max(luminance(m.diffuse.rgb), luminance(
 
 vec3 reflectAbout(vec3 w, vec3 n) { return 2.0 * dot(w, n) * n - w; }
 
-vec3 bsdfEval(Material m, vec3 n, vec3 wo, vec3 wi) {
-  if (dot(wi, n) <= 0.0 || dot(wo, n) <= 0.0) return vec3(0.0);
-  float cosAlpha = dot(reflectAbout(wo, n), wi);
-  float exponent = m.specular.w;
-  float phong = cosAlpha <= 0.0 ? 0.0 : (exponent + 2.0) / (2.0 * PI) * pow(cosAlpha, exponent);
-  return m.diffuse.rgb / PI + phong * m.specular.rgb;
-}
+// f_r(wo, wi) of the smooth lobes (diffuse and specular) and the density with which
+// sampleBsdf returns wi through them, in one pass: next-event estimation (its MIS weight) and
+// a BSDF sample each need both for the same direction, and they share the cosine tests and
+// the Phong power: the normalised lobe's value is its density times (e + 2) / (e + 1).
+struct BsdfValue {
+  vec3 f;
+  float pdf;  // solid angle
+};
 
-float bsdfPdf(Material m, vec3 n, vec3 wo, vec3 wi) {
-  if (dot(wi, n) <= 0.0 || dot(wo, n) <= 0.0) return 0.0;
+BsdfValue bsdfEvaluate(Material m, vec3 n, vec3 wo, vec3 wi) {
+  float cosI = dot(wi, n);
+  if (cosI <= 0.0 || dot(wo, n) <= 0.0) return BsdfValue(vec3(0.0), 0.0);
+  float exponent = m.specular.w;
+  float phong = phongLobePdf(reflectAbout(wo, n), exponent, wi);
   LobeChoice p = lobeProbabilities(m);
-  return p.diffuse * max(dot(n, wi), 0.0) / PI +
-         p.specular * phongLobePdf(reflectAbout(wo, n), m.specular.w, wi);
+  return BsdfValue(
+      m.diffuse.rgb / PI + phong * (exponent + 2.0) / (exponent + 1.0) * m.specular.rgb,
+      p.diffuse * cosI / PI + p.specular * phong);
 }
 
 struct BsdfSample {
@@ -56,9 +61,10 @@ bool sampleBsdf(Material m, vec3 n, vec3 wo, bool entering, vec3 u, out BsdfSamp
   if (u.x < p.diffuse + p.specular) {
     s.wi = u.x < p.diffuse ? sampleCosineHemisphere(n, u.yz)
                            : samplePhongLobe(reflectAbout(wo, n), m.specular.w, u.yz);
-    s.pdf = bsdfPdf(m, n, wo, s.wi);
+    BsdfValue value = bsdfEvaluate(m, n, wo, s.wi);
+    s.pdf = value.pdf;
     if (s.pdf <= 0.0) return false;
-    s.weight = bsdfEval(m, n, wo, s.wi) * (dot(s.wi, n) / s.pdf);
+    s.weight = value.f * (dot(s.wi, n) / s.pdf);
     return true;
   }
   s.delta = true;

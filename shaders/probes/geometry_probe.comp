@@ -1,8 +1,8 @@
 #version 460
-// Test probe: runs every model-geometry, capsule, sampling and random-number routine on a buffer of
-// cases, so that tests/render/ can hold the float GLSL against the double C++ twins in
-// server/geometry/. Compiled once per geometry like every entry point. One invocation per
-// case; it computes all outputs.
+// Test probe: runs every model-geometry, capsule, sampling, BSDF and random-number routine on a
+// buffer of cases, so that tests/render/ can hold the float GLSL against the double C++ twins
+// in server/geometry/ and tests/twins/. Compiled once per geometry like every entry point. One
+// invocation per case; it computes all outputs.
 #extension GL_GOOGLE_include_directive : require
 
 layout(local_size_x = 64) in;
@@ -12,6 +12,8 @@ layout(local_size_x = 64) in;
 #include "common/sampling.glsl"
 #include "geometry/model.glsl"
 #include "geometry/capsule.glsl"
+#include "common/gpu_types.h"
+#include "materials/bsdf.glsl"
 
 // Layouts mirror ProbeCase and ProbeResult in tests/render/geometry_probe.h (std430).
 struct ProbeCase {
@@ -66,7 +68,15 @@ struct ProbeResult {
                            // sobolSecond(rng.y)
   uvec4 pathSeeds;         // pathSamplerSeed(rng.x, rng.y & 1, rng.z & 15, rng.w), the same
                            // for pairs 0 and 1
+  vec4 bsdf;               // bsdfEvaluate(probeMaterial(colour, uv.y), normal, normal,
+                           // cosineSample): f, pdf
 };
+
+// Diffuse, Phong (exponent 1 to 64) and mirror lobes in proportions the colour sets.
+Material probeMaterial(vec3 colour, float u) {
+  return Material(vec4(0.0), vec4(0.05 * colour, 0.0), vec4(0.04 * colour.bgr, 1.0 + 63.0 * u),
+                  vec4(0.01 * colour.gbr, 0.0), vec4(0.0), vec4(0.0));
+}
 
 layout(std430, binding = 0) readonly buffer Cases { ProbeCase cases[]; };
 layout(std430, binding = 1) writeonly buffer Results { ProbeResult results[]; };
@@ -111,6 +121,9 @@ void main() {
   r.basisTangent = vec4(tb, 0.0);
   r.basisBitangent = vec4(bb, 0.0);
   r.cosineSample = vec4(sampleCosineHemisphere(c.normal.xyz, c.uv.xy), 0.0);
+  BsdfValue bsdf = bsdfEvaluate(probeMaterial(c.colour.rgb, c.uv.y), c.normal.xyz, c.normal.xyz,
+                                r.cosineSample.xyz);
+  r.bsdf = vec4(bsdf.f, bsdf.pdf);
   r.triangleSample = vec4(sampleUniformTriangle(c.uv.xy), powerHeuristic(c.uv.z, c.uv.w), 0.0);
 
   uint state = rngSeed(c.rng.x, c.rng.y, c.rng.z);

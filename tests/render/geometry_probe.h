@@ -52,8 +52,9 @@ struct ProbeResult {
   std::array<uint32_t, 4> hashes;
   F4 draws, reflected, triangle_sample, capsule, areas;
   std::array<uint32_t, 4> sobol, path_seeds;
+  F4 bsdf;
 };
-static_assert(sizeof(ProbeResult) == 6 * 16 + 3 * 64 + 11 * 16 + 8 * 16);
+static_assert(sizeof(ProbeResult) == 6 * 16 + 3 * 64 + 11 * 16 + 9 * 16);
 
 constexpr double kUnitRoundoff = FLT_EPSILON / 2;
 constexpr float kFar = 1e30f;

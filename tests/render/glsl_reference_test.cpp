@@ -1,7 +1,8 @@
-// The float GLSL geometry, sampling and random-number routines held against their double C++
-// twins, in all three model geometries, through shaders/probes/geometry_probe.comp (compiled
-// per geometry). geometry_probe.h states the tolerance: each output within a few float ulps
-// of what its inputs' rounding allows. The worst errors are printed per routine.
+// The float GLSL geometry, sampling, BSDF and random-number routines held against their double
+// C++ twins, in all three model geometries, through shaders/probes/geometry_probe.comp
+// (compiled per geometry). geometry_probe.h states the tolerance: each output within a few
+// float ulps of what its inputs' rounding allows. The worst errors are printed per routine.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -14,6 +15,7 @@
 #include "geometry/sobol.h"
 #include "geometry/sampling.h"
 #include "geometry_probe.h"
+#include "twins/bsdf.h"
 
 namespace geodesic::test {
 namespace {
@@ -232,6 +234,36 @@ TEST_P(GlslReference, SamplingMatchesWithinOneMillionth) {
     const double lum = luminance(v3(c.colour));
     EXPECT_NEAR(g.scalars[3], lum, 1e-6 * lum);
   }
+}
+
+// bsdfEvaluate against bsdf_evaluate, from the probe's own float directions (w_o the normal,
+// w_i its cosine sample), for a mix of diffuse, Phong (exponent e in [1, 64]) and mirror lobes.
+// The float cosine between w_i and the mirror direction carries a few ulps, which the Phong
+// power multiplies by e: within 1e-6 (1 + e) of the value, 1 added for values near zero.
+TEST_P(GlslReference, BsdfMatchesItsTwin) {
+  std::vector<ProbeCase> cases;
+  for (int i = 0; i < 4096; ++i) cases.push_back(maker.make());
+  const auto results = run_probe(k, cases);
+  double worst = 0;
+  for (size_t i = 0; i < cases.size(); ++i) {
+    const ProbeCase& c = cases[i];
+    const Vec3 colour = v3(c.colour), n = v3(c.normal);
+    Material m;
+    m.diffuse = 0.05 * colour;
+    m.specular = 0.04 * Vec3{colour.z, colour.y, colour.x};
+    m.shininess = 1 + 63 * double(c.uv[1]);
+    m.mirror = 0.01 * Vec3{colour.y, colour.z, colour.x};
+    const BsdfValue twin = bsdf_evaluate(m, n, n, v3(results[i].cosine_sample));
+    const double scale = 1e-6 * (1 + m.shininess);
+    const double values[] = {twin.f.x, twin.f.y, twin.f.z, twin.pdf};
+    for (int j = 0; j < 4; ++j) {
+      const double error = std::abs(results[i].bsdf[j] - values[j]) / (1 + std::abs(values[j]));
+      worst = std::max(worst, error / scale);
+      EXPECT_LE(error, scale) << "case " << i << ", output " << j;
+    }
+  }
+  std::printf("  %-10s bsdfEvaluate: worst error %.3g of 1e-6 (1 + e) (1 + |value|)\n",
+              geometry_name(k), worst);
 }
 
 void print(const char* test, GeometryKind k, const SphereStats& stats) {

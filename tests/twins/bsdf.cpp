@@ -22,20 +22,14 @@ LobeChoice lobe_probabilities(const Material& m) {
   return {c.diffuse / total, c.specular / total, c.mirror / total, c.transmission / total};
 }
 
-Vec3 bsdf_eval(const Material& m, const Vec3& n, const Vec3& wo, const Vec3& wi) {
-  if (dot(wi, n) <= 0 || dot(wo, n) <= 0) return {};
-  const double cos_alpha = dot(reflect_about(wo, n), wi);
-  const double phong = cos_alpha <= 0 ? 0
-                                      : (m.shininess + 2) / (2 * std::numbers::pi) *
-                                            std::pow(cos_alpha, m.shininess);
-  return kInvPi * m.diffuse + phong * m.specular;
-}
-
-double bsdf_pdf(const Material& m, const Vec3& n, const Vec3& wo, const Vec3& wi) {
-  if (dot(wi, n) <= 0 || dot(wo, n) <= 0) return 0;
+BsdfValue bsdf_evaluate(const Material& m, const Vec3& n, const Vec3& wo, const Vec3& wi) {
+  const double cos_i = dot(wi, n);
+  if (cos_i <= 0 || dot(wo, n) <= 0) return {};
+  // The normalised Phong lobe's value is its density times (e + 2) / (e + 1).
+  const double phong = phong_lobe_pdf(reflect_about(wo, n), m.shininess, wi);
   const LobeChoice p = lobe_probabilities(m);
-  return p.diffuse * cosine_hemisphere_pdf(n, wi) +
-         p.specular * phong_lobe_pdf(reflect_about(wo, n), m.shininess, wi);
+  return {kInvPi * m.diffuse + phong * (m.shininess + 2) / (m.shininess + 1) * m.specular,
+          p.diffuse * kInvPi * cos_i + p.specular * phong};
 }
 
 std::optional<BsdfSample> sample_bsdf(const Material& m, const Vec3& n, const Vec3& wo,
@@ -47,9 +41,10 @@ std::optional<BsdfSample> sample_bsdf(const Material& m, const Vec3& n, const Ve
   if (u0 < p.diffuse + p.specular) {
     s.wi = u0 < p.diffuse ? sample_cosine_hemisphere(n, u1, u2)
                           : sample_phong_lobe(reflect_about(wo, n), m.shininess, u1, u2);
-    s.pdf = bsdf_pdf(m, n, wo, s.wi);
+    const BsdfValue value = bsdf_evaluate(m, n, wo, s.wi);
+    s.pdf = value.pdf;
     if (s.pdf <= 0) return std::nullopt;
-    s.weight = (dot(s.wi, n) / s.pdf) * bsdf_eval(m, n, wo, s.wi);
+    s.weight = (dot(s.wi, n) / s.pdf) * value.f;
     return s;
   }
   s.delta = true;

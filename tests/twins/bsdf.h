@@ -25,12 +25,14 @@ struct LobeChoice {
 // Probabilities of sampling each lobe: proportional to the luminance of its weight.
 LobeChoice lobe_probabilities(const Material& m);
 
-// f_r(w_o, w_i) of the non-delta lobes (diffuse and specular); zero unless both directions
-// lie above the surface.
-Vec3 bsdf_eval(const Material& m, const Vec3& n, const Vec3& wo, const Vec3& wi);
-
-// Density (solid angle) with which sample_bsdf returns w_i through a non-delta lobe.
-double bsdf_pdf(const Material& m, const Vec3& n, const Vec3& wo, const Vec3& wi);
+// f_r(w_o, w_i) of the non-delta lobes (diffuse and specular), zero unless both directions
+// lie above the surface, and the density (solid angle) with which sample_bsdf returns w_i
+// through them: one evaluation, as next-event estimation and BSDF sampling use both.
+struct BsdfValue {
+  Vec3 f;
+  double pdf = 0;
+};
+BsdfValue bsdf_evaluate(const Material& m, const Vec3& n, const Vec3& wo, const Vec3& wi);
 
 struct BsdfSample {
   Vec3 wi;

@@ -62,8 +62,8 @@ Material glossy(double diffuse, double specular, double exponent) {
   return m;
 }
 
-// Smooth lobes: the directions sample_bsdf returns follow bsdf_pdf, and the rejected ones
-// (below the surface) match the density's missing mass.
+// Smooth lobes: the directions sample_bsdf returns follow bsdf_evaluate's density, and the
+// rejected ones (below the surface) match the density's missing mass.
 TEST(LightSampling, BsdfSamplesFollowBsdfPdf) {
   const Vec3 n = normalize(Vec3{0.1, 0.3, 0.9});
   for (const Material& m : {glossy(0.6, 0.3, 20), glossy(0.0, 0.9, 5), glossy(0.8, 0.0, 1)})
@@ -76,7 +76,7 @@ TEST(LightSampling, BsdfSamplesFollowBsdfPdf) {
             if (!s) return std::nullopt;
             return s->wi;
           },
-          [&](const Vec3& w) { return bsdf_pdf(m, n, wo, w); });
+          [&](const Vec3& w) { return bsdf_evaluate(m, n, wo, w).pdf; });
       EXPECT_GT(p, kSignificance) << "specular " << m.specular.x << " wo.z " << wo.z;
     }
 }
@@ -107,7 +107,7 @@ TEST(LightSampling, BsdfIsReciprocal) {
   for (int i = 0; i < 1000; ++i) {
     const Vec3 a = sample_cosine_hemisphere(n, rng_next(state), rng_next(state));
     const Vec3 b = sample_cosine_hemisphere(n, rng_next(state), rng_next(state));
-    const Vec3 fab = bsdf_eval(m, n, a, b), fba = bsdf_eval(m, n, b, a);
+    const Vec3 fab = bsdf_evaluate(m, n, a, b).f, fba = bsdf_evaluate(m, n, b, a).f;
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(fab[c], fba[c], 1e-12 * (1 + fab[c]));
   }
 }
