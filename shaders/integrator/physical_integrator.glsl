@@ -110,6 +110,8 @@ vec3 physicalRadiance(GeodesicRay ray, PathSampler samples) {
     throughput *= bs.weight;
     misWeighted = nee && !bs.delta;
     bsdfDensity = bs.pdf;
+    // From the third bounce: from the first, as Cycles does, paths are 15-20 % cheaper but the
+    // Cornell box's relMSE doubles: error per second gets worse (docs/benchmarks.md).
     if (frame.russian_roulette != 0u && depth >= 3u &&
         !survivesRussianRoulette(throughput, lobeRoulette.y))
       break;
