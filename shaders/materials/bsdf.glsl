@@ -1,5 +1,5 @@
 // The physical model's scattering: diffuse, normalised Phong, mirror and dielectric lobes
-// weighted by the material; the float twin of server/render/bsdf.cpp (read its header for the
+// weighted by the material; the float twin of tests/twins/bsdf.cpp (read its header for the
 // definitions). Vectors are in the local frame at the origin and point away from the surface;
 // n is the shading normal on the side of wo.
 #ifndef BSDF_GLSL
