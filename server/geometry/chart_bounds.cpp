@@ -1,4 +1,4 @@
-#include "render/prepare/chart_bounds.h"
+#include "geometry/chart_bounds.h"
 
 #include <algorithm>
 #include <cmath>
