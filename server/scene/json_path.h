@@ -8,6 +8,7 @@
 #include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -39,6 +40,9 @@ class JsonNode {
 
   // Requires an object whose keys are all in `allowed`.
   void expect_object(std::initializer_list<std::string_view> allowed) const {
+    expect_object(std::span(allowed.begin(), allowed.size()));
+  }
+  void expect_object(std::span<const std::string_view> allowed) const {
     if (!value_->is_object()) fail("must be an object");
     for (const auto& item : value_->items())
       if (std::find(allowed.begin(), allowed.end(), item.key()) == allowed.end())

@@ -55,6 +55,20 @@ struct EdgeTube {
   double radius = 0;
   uint32_t material = 0;
 };
+
+// An analytic shape of a kind in the shape table (scene/shape.h), e.g. a horosphere. Its
+// parameters are model vectors and a length, so that an isometry moves any shape alike.
+struct ShapeParams {
+  Vec4 a, b;        // model vectors (points, tangents, ideal points), carried linearly
+  double size = 0;  // a length, which isometries keep
+};
+
+struct Shape {
+  uint32_t kind = 0;  // ShapeKind::id: SHAPE_* of shaders/common/shape_kinds.h
+  ShapeParams params;
+  uint32_t material = 0;
+};
+
 struct PointLight {
   Vec3 position;
   Vec3 intensity;  // RGB
@@ -119,6 +133,7 @@ struct Scene {
   std::vector<Sphere> spheres;
   std::vector<TriangleMesh> meshes;
   std::vector<EdgeTube> tubes;
+  std::vector<Shape> shapes;
   std::vector<PointLight> lights;
   RenderSettings render;
 };

@@ -12,6 +12,10 @@ Scene moved_scene(Scene scene, const WideIsometry& g) {
       for (Vec3& n : mesh.normals) n = (g.matrix() * Vec4{n.x, n.y, n.z, 0}).xyz();
   }
   for (PointLight& light : scene.lights) move(light.position);
+  for (Shape& shape : scene.shapes) {  // model vectors, carried linearly (scene.h ShapeParams)
+    shape.params.a = g.matrix() * shape.params.a;
+    shape.params.b = g.matrix() * shape.params.b;
+  }
   scene.camera.pose = g.apply(scene.camera.pose);
   return scene;
 }

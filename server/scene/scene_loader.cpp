@@ -14,6 +14,7 @@
 #include "scene/manifold_loader.h"
 #include "scene/render_settings_loader.h"
 #include "scene/scene_isometry.h"
+#include "scene/shape.h"
 #include "scene/mesh_loader.h"
 
 namespace geodesic {
@@ -317,9 +318,19 @@ void read_object(const JsonNode& node, const MaterialTable& materials, const Doc
     node.expect_object({"type", "material", "file", "position", "scale", "rotation"});
   else if (type == "domain_edges")
     node.expect_object({"type", "material", "radius"});
-  else
-    type_node.fail("unknown object type \"" + type +
-                   "\" (expected \"sphere\", \"quad\", \"polygon\", \"box\", \"mesh\" or \"domain_edges\")");
+  else if (const ShapeKind* shape = find_shape_kind(type)) {
+    node.expect_object(shape->fields);
+    const uint32_t material = materials.lookup(node.at("material"));
+    scene.shapes.push_back({shape->id, shape->read(node, scene.geometry), material});
+    return;
+  } else {
+    std::vector<std::string> known{"sphere", "quad", "polygon", "box", "mesh", "domain_edges"};
+    for (const ShapeKind* kind : shape_kinds()) known.emplace_back(kind->type);
+    std::string list;
+    for (size_t i = 0; i < known.size(); ++i)
+      list += (i == 0 ? "" : i + 1 == known.size() ? " or " : ", ") + ('"' + known[i] + '"');
+    type_node.fail("unknown object type \"" + type + "\" (expected " + list + ")");
+  }
   const uint32_t material = materials.lookup(node.at("material"));
 
   if (type == "sphere") {

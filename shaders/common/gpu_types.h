@@ -24,10 +24,12 @@ using uint = std::uint32_t;
 #define HIT_TRIANGLE 1u
 #define HIT_SPHERE 2u
 #define HIT_TUBE 3u
+#define HIT_SHAPE 4u  // an analytic shape of the shape table (primitives/shape_table.glsl)
 // The hit record that a primitive kind's instances select in the ray-tracing pipeline's
 // binding table (render/device/acceleration.cpp, ray_tracing_backend.cpp).
 #define HIT_RECORD_TRIANGLES 0u
 #define HIT_RECORD_SPHERES 1u
+#define HIT_RECORD_SHAPES 2u
 
 struct Material {
   vec4 ambient;       // rgb: k_a
@@ -49,6 +51,23 @@ struct Sphere {
 // One sphere's bounding box in one cell's acceleration structure.
 struct SphereRef {
   uint sphere;
+  uint cell;
+};
+
+// An analytic shape (server/scene/shape.h): its kind (common/shape_kinds.h) and the model
+// vectors and length its module reads (shaders/primitives/shapes/, server/scene/shapes/).
+struct Shape {
+  vec4 a;
+  vec4 b;
+  float size;
+  uint kind;
+  uint material;
+  uint pad0;
+};
+
+// One shape's bounding box in one cell's acceleration structure.
+struct ShapeRef {
+  uint shape;
   uint cell;
 };
 

@@ -34,6 +34,11 @@ layout(set = 0, binding = BINDING_SPHERES, std430) readonly buffer Spheres { Sph
 layout(set = 0, binding = BINDING_SPHERE_REFS, std430)
     readonly buffer SphereRefs { SphereRef sphereRefs[]; };
 #endif
+#if defined(HAS_SHAPES)
+layout(set = 0, binding = BINDING_SHAPES, std430) readonly buffer Shapes { Shape shapes[]; };
+layout(set = 0, binding = BINDING_SHAPE_REFS, std430)
+    readonly buffer ShapeRefs { ShapeRef shapeRefs[]; };
+#endif
 #if defined(HAS_TRIANGLES)
 layout(set = 0, binding = BINDING_POSITIONS, std430)  // chart
     readonly buffer Positions { vec4 positions[]; };

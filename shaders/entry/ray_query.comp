@@ -9,6 +9,7 @@
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 #include "common/core.glsl"
+#include "primitives/shape_table.glsl"
 #include "primitives/sphere_candidate.glsl"
 
 // The closest (or, for shadows, any) hit along the chart segment o + s d, s in [0, sMax], in
@@ -32,20 +33,37 @@ ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool 
       continue;
     }
 #endif
-#if defined(HAS_SPHERES)
+#if defined(HAS_SPHERES) || defined(HAS_SHAPES)
     if (rayQueryGetIntersectionTypeEXT(q, false) != gl_RayQueryCandidateIntersectionAABBEXT)
       continue;
-    uint refIndex = candidate;
-#if defined(SHARED_CELL_MASKS)
-    if (sphereRefs[refIndex].cell != cell) continue;
-#endif
     bool committed = rayQueryGetIntersectionTypeEXT(q, true) != gl_RayQueryCommittedIntersectionNoneEXT;
     float sLimit = committed ? rayQueryGetIntersectionTEXT(q, true) : sMax;
     float s, t;
-    if (sphereCandidate(sphereRefs[refIndex], p, v, 0.0, sLimit, s, t)) {
-      rayQueryGenerateIntersectionEXT(q, s);
-      best = ChartHit(HIT_SPHERE, sphereRefs[refIndex].sphere, s, t, vec2(0.0));
+    // A box's kind is its instance's hit record (render/device/acceleration.cpp).
+    uint record = rayQueryGetIntersectionInstanceShaderBindingTableRecordOffsetEXT(q, false);
+#if defined(HAS_SHAPES)
+    if (record == HIT_RECORD_SHAPES) {
+      ShapeRef ref = shapeRefs[candidate];
+#if defined(SHARED_CELL_MASKS)
+      if (ref.cell != cell) continue;
+#endif
+      if (shapeCandidate(ref, p, v, 0.0, sLimit, s, t)) {
+        rayQueryGenerateIntersectionEXT(q, s);
+        best = ChartHit(HIT_SHAPE, ref.shape, s, t, vec2(0.0));
+      }
+      continue;
     }
+#endif
+#if defined(HAS_SPHERES)
+    SphereRef ref = sphereRefs[candidate];
+#if defined(SHARED_CELL_MASKS)
+    if (ref.cell != cell) continue;
+#endif
+    if (sphereCandidate(ref, p, v, 0.0, sLimit, s, t)) {
+      rayQueryGenerateIntersectionEXT(q, s);
+      best = ChartHit(HIT_SPHERE, ref.sphere, s, t, vec2(0.0));
+    }
+#endif
 #endif
   }
   uint type = rayQueryGetIntersectionTypeEXT(q, true);
@@ -58,7 +76,7 @@ ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool 
                     rayQueryGetIntersectionTEXT(q, true), FAR,
                     rayQueryGetIntersectionBarycentricsEXT(q, true));
 #endif
-  return best;  // the last generated sphere hit is the committed one
+  return best;  // the last generated box hit (sphere or shape) is the committed one
 #endif
 }
 

@@ -5,8 +5,9 @@
 
 const float FAR = 1e30;
 
-// Traversal skips the primitive type a scene lacks, where the device allows it.
-#if defined(CULL_PRIMITIVES) && !defined(HAS_SPHERES)
+// Traversal skips the primitive type a scene lacks, where the device allows it: boxes
+// (spheres, shapes) or triangles.
+#if defined(CULL_PRIMITIVES) && !defined(HAS_SPHERES) && !defined(HAS_SHAPES)
 #define PRIMITIVE_CULLING_FLAGS gl_RayFlagsSkipAABBEXT
 #elif defined(CULL_PRIMITIVES) && !defined(HAS_TRIANGLES)
 #define PRIMITIVE_CULLING_FLAGS gl_RayFlagsSkipTrianglesEXT
@@ -30,10 +31,10 @@ struct GeodesicRay {
   uint enteredFace;  // face it entered the cell through (~0u: none), never an exit
 };
 
-// The closest hit along one chart segment. kind: HIT_NONE, _TRIANGLE, _SPHERE or _TUBE.
+// The closest hit along one chart segment. kind: HIT_NONE, _TRIANGLE, _SPHERE, _TUBE or _SHAPE.
 struct ChartHit {
   uint kind;
-  uint index;       // global triangle or sphere index
+  uint index;       // global triangle, sphere, tube or shape index
   float s;          // chart parameter along o + s d
   float t;          // arc length (spheres; triangles fill it in later)
   vec2 barycentrics;
@@ -71,6 +72,16 @@ void modelRayOfChartLine(vec3 o, vec3 d, out vec4 p, out vec4 v) {
   vec4 dp = vec4(d, 0.0) / sqrt(lambda2) -
             GEOMETRY_CURVATURE * vec4(o, 1.0) * dot(o, d) / (lambda2 * sqrt(lambda2));
   v = normalizeTangent(p, dp);
+}
+
+// An intersection shader's chart line o + s' d, s' in [sMin, sMax] (its gl_WorldRay* and
+// gl_RayT*), as the model ray (p, v) and the range of (p, v)'s own chart parameter s, which
+// runs along chartDirection(p, v) = k d: s' = k s.
+void boxRay(vec3 o, vec3 d, float sMin, float sMax, out vec4 p, out vec4 v, out float k,
+            out vec2 range) {
+  modelRayOfChartLine(o, d, p, v);
+  k = dot(chartDirection(p, v), d) / dot(d, d);
+  range = vec2(sMin / k, sMax >= FAR ? FAR : sMax / k);
 }
 
 #endif

@@ -13,10 +13,11 @@ vec3 paperRadiance(GeodesicRay ray, PathSampler samples) {
     if (!followGeodesic(ray, FAR, false, hit, travelled)) break;  // escaped: black background
     Surface s = surfaceOf(ray, hit);
     Material m = materials[s.material];
+    radiance += throughput * (m.emission.rgb + m.ambient.rgb * frame.ambient_light.rgb);
+    if (s.horizon) break;  // too far out to light or go on from (primitives/surface.glsl)
     LocalFrame local = localFrameAt(s.position);
     vec3 n = toLocal(local, s.normal), ng = toLocal(local, s.geometricNormal);
     vec3 incoming = toLocal(local, s.incoming);
-    radiance += throughput * (m.emission.rgb + m.ambient.rgb * frame.ambient_light.rgb);
 #if defined(HAS_POINT_LIGHTS)
     radiance += throughput * directIllumination(s, local, n, ng, -incoming, m);
 #endif

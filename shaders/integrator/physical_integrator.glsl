@@ -89,6 +89,7 @@ vec3 physicalRadiance(GeodesicRay ray, PathSampler samples) {
       radiance += throughput * m.emission.rgb * weight;
     }
     if (depth > frame.max_depth) break;  // past the last bounce only emission counts
+    if (s.horizon) break;                // too far out to go on from (primitives/surface.glsl)
     LocalFrame local = localFrameAt(s.position);
     vec3 n = toLocal(local, s.normal);
     vec3 wo = -toLocal(local, s.incoming);

@@ -6,6 +6,7 @@
 #if defined(HAS_TUBES)
 #include "geometry/capsule.glsl"
 #endif
+#include "primitives/shape_table.glsl"
 
 struct Surface {
   vec4 position;         // model point q
@@ -18,6 +19,7 @@ struct Surface {
   uint emitter;          // index into emitters, ~0u when the surface does not emit
   float t;               // arc length along the segment that hit
   bool frontFace;        // the ray arrived on the outer (sphere) or front (triangle) side
+  bool horizon;          // a shape's point past SHAPE_HORIZON_W: no path goes on from it
 };
 
 Surface noSurface() {
@@ -30,6 +32,7 @@ Surface noSurface() {
   s.emitter = ~0u;
   s.t = FAR;
   s.frontFace = true;
+  s.horizon = false;
   return s;
 }
 
@@ -47,6 +50,7 @@ Surface facing(Surface s) {
 Surface chartSurface(GeodesicRay ray, vec3 x, vec3 n, float delta, float sHit) {
   Surface s;
   s.hit = 1u;
+  s.horizon = false;
   s.cell = ray.cell;
   mat4 P = cellChartIsometry(ray.cell);
   mat4 toModel = transpose(P);  // signed permutations: P^-1 = P^T
@@ -59,22 +63,36 @@ Surface chartSurface(GeodesicRay ray, vec3 x, vec3 n, float delta, float sHit) {
   return s;
 }
 
-// The surface hit by `ray` (whose current segment produced `hit`): a triangle, a sphere or an
-// edge tube (ChartHit.kind).
+// The surface hit by `ray` (whose current segment produced `hit`): a triangle, a sphere, an
+// edge tube or a shape (ChartHit.kind).
 Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
   Surface s;
   s.hit = 1u;
+  s.horizon = false;
   s.cell = ray.cell;
-#if defined(HAS_SPHERES)
-  if (hit.kind == HIT_SPHERE) {
-    Sphere sphere = spheres[hit.index];
+#if defined(HAS_SPHERES) || defined(HAS_SHAPES)
+  if (hit.kind == HIT_SPHERE || hit.kind == HIT_SHAPE) {  // found in the model, at arc length t
     s.position = normalizePoint(geodesicPoint(ray.p, ray.v, hit.t));
     s.incoming = geodesicTangent(ray.p, ray.v, hit.t);
-    s.geometricNormal = sphereNormal(sphere.center, s.position);
-    s.normal = s.geometricNormal;
-    s.material = sphere.material;
-    s.emitter = sphere.emitter;
     s.t = hit.t;
+#if defined(HAS_SHAPES)
+    if (hit.kind == HIT_SHAPE) {
+      Shape shape = shapes[hit.index];
+      s.geometricNormal = shapeNormal(shape, s.position);
+      s.material = shape.material;
+      s.emitter = ~0u;  // its emission is found by BSDF sampling alone
+      s.horizon = !(s.position.w <= SHAPE_HORIZON_W);
+    }
+#endif
+#if defined(HAS_SPHERES)
+    if (hit.kind == HIT_SPHERE) {
+      Sphere sphere = spheres[hit.index];
+      s.geometricNormal = sphereNormal(sphere.center, s.position);
+      s.material = sphere.material;
+      s.emitter = sphere.emitter;
+    }
+#endif
+    s.normal = s.geometricNormal;
     return facing(s);
   }
 #endif
@@ -111,7 +129,7 @@ Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
   s.emitter = info.emitter;
   return facing(s);
 #else
-  return noSurface();  // unreachable: without triangles every hit is a sphere's
+  return noSurface();  // unreachable: without triangles every hit is a box's or a tube's
 #endif
 }
 

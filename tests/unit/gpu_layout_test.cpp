@@ -119,6 +119,11 @@ TEST(GpuLayout, EveryHostStructHasItsShaderStructsOffsetsAndStride) {
         AT(GpuSphere, emitter), AT(GpuSphere, pad0)},
        sizeof(GpuSphere)},
       {"SphereRef", {AT(GpuSphereRef, sphere), AT(GpuSphereRef, cell)}, sizeof(GpuSphereRef)},
+      {"Shape",
+       {AT(GpuShape, a), AT(GpuShape, b), AT(GpuShape, size), AT(GpuShape, kind),
+        AT(GpuShape, material), AT(GpuShape, pad0)},
+       sizeof(GpuShape)},
+      {"ShapeRef", {AT(GpuShapeRef, shape), AT(GpuShapeRef, cell)}, sizeof(GpuShapeRef)},
       {"PointLight", {AT(GpuPointLight, position), AT(GpuPointLight, intensity)},
        sizeof(GpuPointLight)},
       {"TriangleInfo",
@@ -185,6 +190,7 @@ TEST(GpuLayout, EveryBindingHoldsTheBlockTheHostBindsThere) {
       {kCellsBinding, "Cells"},               {kCellFacesBinding, "CellFaces"},
       {kDiagnosticsBinding, "Diagnostics"},   {kEmittersBinding, "Emitters"},
       {kLightImagesBinding, "LightImages"},   {kTubesBinding, "Tubes"},
+      {kShapesBinding, "Shapes"},             {kShapeRefsBinding, "ShapeRefs"},
       {kNormalsBinding, "Normals"}};
   const SpirvLayout& shader = shader_layout();
   for (const auto& [binding, block] : expected) {

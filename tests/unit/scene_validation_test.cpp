@@ -6,6 +6,7 @@
 #include <tuple>
 #include <vector>
 
+#include "scene/shape.h"
 #include "scene_document.h"
 
 namespace geodesic {
@@ -97,12 +98,17 @@ TEST(SceneLoader, RejectsInvalidObjectsNamingTheField) {
   const std::string box = R"({"type": "box", "material": "red", "min": [0, 0, 0], )";
   const std::string mesh =
       R"({"type": "mesh", "material": "red", "file": "meshes/octahedron.obj", )";
+  // The types the loader knows: its own, then the shape table's (scene/shape.h).
+  std::string types = R"("sphere", "quad", "polygon", "box", "mesh", "domain_edges")";
+  for (const ShapeKind* kind : shape_kinds()) {
+    const std::string type = '"' + std::string(kind->type) + '"';
+    types += kind == shape_kinds().back() ? " or " + type : ", " + type;
+  }
   const std::pair<std::string, std::string> cases[] = {
       {"3", "objects[0]: must be an object"},
       {R"({"material": "red"})", R"(objects[0]: missing required field "type")"},
       {R"({"type": "cone", "material": "red"})",
-       R"(objects[0].type: unknown object type "cone" (expected "sphere", "quad", "polygon", )"
-       R"("box", "mesh" or "domain_edges"))"},
+       R"(objects[0].type: unknown object type "cone" (expected )" + types + ")"},
       {sphere + R"("radius": 1, "colour": "red"})", R"(objects[0]: unknown field "colour")"},
       {sphere + R"("radius": -1})", "objects[0].radius: must be > 0"},
       {sphere + R"("radius": 2e6})", "objects[0].radius: must be <= 1e6"},

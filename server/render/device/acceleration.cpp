@@ -110,6 +110,7 @@ SceneAccelerationStructures SceneAccelerationStructures::build(VulkanContext& ct
   out.positions = GpuBuffer::from_vector(ctx, scene.positions, kBuildInput);
   out.indices = GpuBuffer::from_vector(ctx, scene.indices, kBuildInput);
   out.sphere_bounds = GpuBuffer::from_vector(ctx, scene.sphere_bounds, kBuildInput);
+  out.shape_bounds = GpuBuffer::from_vector(ctx, scene.shape_bounds, kBuildInput);
 
   for (uint32_t c = 0; c < scene.cell_geometry.size(); ++c) {
     const CellGeometry& cell = scene.cell_geometry[c];
@@ -135,21 +136,25 @@ SceneAccelerationStructures SceneAccelerationStructures::build(VulkanContext& ct
       instances.push_back(instance_of(out.bottom.back(), cell.first_triangle, mask,
                                         HIT_RECORD_TRIANGLES));
     }
-    if (cell.sphere_ref_count > 0) {
+    // The cell's boxes of one procedural kind (spheres, shapes: refs [first, first + count)),
+    // in an instance whose hit record selects the kind's intersection shader.
+    const auto add_boxes = [&](const GpuBuffer& bounds, uint32_t first, uint32_t count,
+                               uint32_t record) {
+      if (count == 0) return;
       VkAccelerationStructureGeometryKHR geometry{
           VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR};
       geometry.geometryType = VK_GEOMETRY_TYPE_AABBS_KHR;
       geometry.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;
       auto& aabbs = geometry.geometry.aabbs;
       aabbs.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_AABBS_DATA_KHR;
-      aabbs.data.deviceAddress =
-          out.sphere_bounds.address() + VkDeviceSize(cell.first_sphere_ref) * sizeof(GpuAabb);
+      aabbs.data.deviceAddress = bounds.address() + VkDeviceSize(first) * sizeof(GpuAabb);
       aabbs.stride = sizeof(GpuAabb);
       out.bottom.push_back(AccelerationStructure::build(
-          ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, geometry, cell.sphere_ref_count));
-      instances.push_back(instance_of(out.bottom.back(), cell.first_sphere_ref, mask,
-                                        HIT_RECORD_SPHERES));
-    }
+          ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, geometry, count));
+      instances.push_back(instance_of(out.bottom.back(), first, mask, record));
+    };
+    add_boxes(out.sphere_bounds, cell.first_sphere_ref, cell.sphere_ref_count, HIT_RECORD_SPHERES);
+    add_boxes(out.shape_bounds, cell.first_shape_ref, cell.shape_ref_count, HIT_RECORD_SHAPES);
   }
 
   out.instances = GpuBuffer::from_vector(ctx, instances, kBuildInput);

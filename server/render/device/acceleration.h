@@ -1,8 +1,9 @@
-// Acceleration structures: per cell of the chart atlas, one bottom level for its triangles and
-// one for its spheres' bounding boxes, all in the cell's chart; a top level with an instance
-// of each that exists. The instance mask is the cell's bit (rays trace one cell at a time),
-// the custom index the offset of the cell's first triangle or sphere ref, and the
-// shader-binding-table offset the kind (0 = triangles, 1 = spheres).
+// Acceleration structures: per cell of the chart atlas, one bottom level for its triangles,
+// one for its spheres' bounding boxes and one for its shapes' (scene/shape.h), all in the
+// cell's chart; a top level with an instance of each that exists. The instance mask is the
+// cell's bit (rays trace one cell at a time), the custom index the offset of the cell's first
+// triangle, sphere ref or shape ref, and the shader-binding-table offset the kind
+// (HIT_RECORD_*, common/gpu_types.h).
 #pragma once
 
 #include "render/device/gpu_buffer.h"
@@ -41,6 +42,7 @@ struct SceneAccelerationStructures {
   GpuBuffer positions;
   GpuBuffer indices;
   GpuBuffer sphere_bounds;
+  GpuBuffer shape_bounds;
   GpuBuffer instances;
   std::vector<AccelerationStructure> bottom;
   AccelerationStructure top;

@@ -1,7 +1,9 @@
 // Back end 2: a VK_KHR_ray_tracing_pipeline pipeline. Ray generation runs the integrator; the
 // shader binding table holds one miss record and one hit group per primitive kind (triangles;
-// spheres with their intersection shader), made only for the kinds the scene has.
+// spheres and shapes with their intersection shaders: kHitGroups), made only for the kinds
+// the scene has.
 #include <cstring>
+#include <iterator>
 #include <vector>
 
 #include "render/device/gpu_buffer.h"
@@ -14,6 +16,25 @@ namespace {
 VkDeviceSize align_up(VkDeviceSize value, VkDeviceSize alignment) {
   return (value + alignment - 1) / alignment * alignment;
 }
+
+// The hit group of each primitive kind, in the order of their hit records (HIT_RECORD_*,
+// common/gpu_types.h), which the instances select (render/device/acceleration.cpp).
+struct HitGroup {
+  VkRayTracingShaderGroupTypeKHR type;
+  const char* closest;
+  const char* any;  // only where cells share mask bits
+  const char* intersection;
+  bool PipelineFeatures::*present;
+};
+constexpr HitGroup kHitGroups[] = {
+    {VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR, "entry/triangle.rchit",
+     "entry/triangle.rahit", nullptr, &PipelineFeatures::triangles},
+    {VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, "entry/sphere.rchit",
+     "entry/sphere.rahit", "entry/sphere.rint", &PipelineFeatures::spheres},
+    {VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, "entry/shape.rchit",
+     "entry/shape.rahit", "entry/shape.rint", &PipelineFeatures::shapes}};
+constexpr uint32_t kHitRecords = std::size(kHitGroups);
+static_assert(HIT_RECORD_TRIANGLES == 0 && HIT_RECORD_SPHERES == 1 && HIT_RECORD_SHAPES == 2);
 
 class RayTracingBackend : public TraceBackend {
  public:
@@ -35,10 +56,12 @@ class RayTracingBackend : public TraceBackend {
   std::vector<std::string> entries() const override {
     const PipelineFeatures& f = res_.features();
     std::vector<std::string> e{"entry/raygen.rgen", "entry/miss.rmiss"};
-    if (f.triangles) e.push_back("entry/triangle.rchit");
-    if (f.triangles && f.shared_cell_masks) e.push_back("entry/triangle.rahit");
-    if (f.spheres) e.insert(e.end(), {"entry/sphere.rchit", "entry/sphere.rint"});
-    if (f.spheres && f.shared_cell_masks) e.push_back("entry/sphere.rahit");
+    for (const HitGroup& g : kHitGroups) {
+      if (!(f.*g.present)) continue;
+      e.push_back(g.closest);
+      if (g.intersection) e.push_back(g.intersection);
+      if (f.shared_cell_masks) e.push_back(g.any);
+    }
     return e;
   }
 
@@ -55,10 +78,14 @@ class RayTracingBackend : public TraceBackend {
   }
 
  private:
-  // Groups in pipeline order: raygen, miss, then a triangle and/or a sphere hit group.
-  uint32_t group_count() const {
-    return 2u + (res_.features().triangles ? 1u : 0u) + (res_.features().spheres ? 1u : 0u);
+  // Groups in pipeline order: raygen, miss, then the hit groups of the kinds present.
+  std::vector<const HitGroup*> hit_groups() const {
+    std::vector<const HitGroup*> present;
+    for (const HitGroup& g : kHitGroups)
+      if (res_.features().*g.present) present.push_back(&g);
+    return present;
   }
+  uint32_t group_count() const { return 2u + uint32_t(hit_groups().size()); }
 
   VkPipeline create_pipeline(const std::vector<Spirv>& spirv, const SceneLayout& layout,
                              VkPipelineCache cache) const {
@@ -104,15 +131,12 @@ class RayTracingBackend : public TraceBackend {
     std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups = {
         group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 0, nullptr, nullptr, nullptr),
         group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, 1, nullptr, nullptr, nullptr)};
-    if (f.triangles)
-      groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR, none,
-                             "entry/triangle.rchit", "entry/triangle.rahit", nullptr));
-    if (f.spheres)
-      groups.push_back(group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, none,
-                             "entry/sphere.rchit", "entry/sphere.rahit", "entry/sphere.rint"));
+    for (const HitGroup* g : hit_groups())
+      groups.push_back(group(g->type, none, g->closest, g->any, g->intersection));
 
     VkRayTracingPipelineCreateInfoKHR info{VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR};
-    if (f.primitive_culling && !f.spheres) info.flags |= VK_PIPELINE_CREATE_RAY_TRACING_SKIP_AABBS_BIT_KHR;
+    if (f.primitive_culling && !f.boxes())
+      info.flags |= VK_PIPELINE_CREATE_RAY_TRACING_SKIP_AABBS_BIT_KHR;
     if (f.primitive_culling && !f.triangles)
       info.flags |= VK_PIPELINE_CREATE_RAY_TRACING_SKIP_TRIANGLES_BIT_KHR;
     info.stageCount = static_cast<uint32_t>(stages.size());
@@ -140,12 +164,12 @@ class RayTracingBackend : public TraceBackend {
                                                 handles.size(), handles.data()),
              "vkGetRayTracingShaderGroupHandlesKHR");
 
-    // Regions: raygen | miss | triangle hit, sphere hit; each base-aligned. Instances pick
-    // their hit record by kind (HIT_RECORD_*, common/gpu_types.h); a kind the scene lacks is
-    // never hit, and its record repeats the other one.
+    // Regions: raygen | miss | one hit record per kind (kHitGroups); each base-aligned.
+    // Instances pick their hit record by kind (HIT_RECORD_*, common/gpu_types.h); a kind the
+    // scene lacks is never hit, and its record repeats the first present one.
     const VkDeviceSize raygen_size = align_up(stride, base);
     const VkDeviceSize miss_size = align_up(stride, base);
-    const VkDeviceSize hit_size = align_up(2 * stride, base);
+    const VkDeviceSize hit_size = align_up(kHitRecords * stride, base);
     table_ = GpuBuffer(ctx_, raygen_size + miss_size + hit_size + base,
                        VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR);
     const VkDeviceAddress start = align_up(table_.address(), base);
@@ -155,15 +179,17 @@ class RayTracingBackend : public TraceBackend {
     };
     copy(0, 0);
     copy(1, raygen_size);
-    if (groups > 2) {
-      const uint32_t triangle_group = 2, sphere_group = groups - 1;
-      copy(triangle_group, raygen_size + miss_size + HIT_RECORD_TRIANGLES * stride);
-      copy(sphere_group, raygen_size + miss_size + HIT_RECORD_SPHERES * stride);
+    const std::vector<const HitGroup*> present = hit_groups();
+    for (uint32_t record = 0; record < kHitRecords && !present.empty(); ++record) {
+      uint32_t group = 2;  // the first present kind's, unless this record's kind is present
+      for (uint32_t i = 0; i < present.size(); ++i)
+        if (present[i] == &kHitGroups[record]) group = 2 + i;
+      copy(group, raygen_size + miss_size + record * stride);
     }
 
     raygen_region_ = {start, raygen_size, raygen_size};
     miss_region_ = {start + raygen_size, stride, stride};
-    hit_region_ = {start + raygen_size + miss_size, stride, 2 * stride};
+    hit_region_ = {start + raygen_size + miss_size, stride, kHitRecords * stride};
   }
 
   VulkanContext& ctx_;

@@ -4,8 +4,9 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "render/prepare/chart_bounds.h"
+#include "geometry/chart_bounds.h"
 #include "render/prepare/tube_culling.h"
+#include "scene/shape.h"
 
 namespace geodesic {
 namespace {
@@ -30,6 +31,18 @@ ChartBox cell_box(const Cell& cell) {
     }
   }
   return box;
+}
+
+// A chart box as the acceleration structure's, padded outwards by a few float ulps of the
+// coordinates so that rounding never clips what it bounds.
+GpuAabb padded(const ChartBox& box) {
+  const auto pad = [](double x) { return 1e-6 * (1 + std::abs(x)); };
+  GpuAabb aabb{};
+  for (int i = 0; i < 3; ++i) {
+    aabb.min[i] = float(box.lo[i] - pad(box.lo[i]));
+    aabb.max[i] = float(box.hi[i] + pad(box.hi[i]));
+  }
+  return aabb;
 }
 
 void pack_cell_triangles(const Scene& scene, const EmitterTable& emitting, const Cell& cell,
@@ -81,15 +94,25 @@ void pack_cell_spheres(const Scene& scene, const Cell& cell, uint32_t cell_index
     const auto bounds = sphere_chart_box(k, centre, sphere.radius);
     const auto clipped = bounds ? intersect(*bounds, box) : std::optional<ChartBox>(box);
     if (!clipped) continue;
-    // Pad outwards by a few float ulps of the coordinates so rounding never clips the sphere.
-    const auto pad = [](double x) { return 1e-6 * (1 + std::abs(x)); };
-    GpuAabb aabb{};
-    for (int i = 0; i < 3; ++i) {
-      aabb.min[i] = float(clipped->lo[i] - pad(clipped->lo[i]));
-      aabb.max[i] = float(clipped->hi[i] + pad(clipped->hi[i]));
-    }
     out.sphere_refs.push_back({s, cell_index});
-    out.sphere_bounds.push_back(aabb);
+    out.sphere_bounds.push_back(padded(*clipped));
+  }
+}
+
+// The analytic shapes' boxes in the cell's chart (ShapeKind::chart_box, scene/shape.h),
+// clipped to the cell's box.
+void pack_cell_shapes(const Scene& scene, const Cell& cell, uint32_t cell_index,
+                      PackedScene& out) {
+  const ChartBox box = cell_box(cell);
+  for (uint32_t i = 0; i < scene.shapes.size(); ++i) {
+    const Shape& shape = scene.shapes[i];
+    const ShapeParams in_frame{cell.chart_isometry * shape.params.a,
+                               cell.chart_isometry * shape.params.b, shape.params.size};
+    const auto bounds = shape_kind(shape.kind).chart_box(scene.geometry, in_frame);
+    const auto clipped = bounds ? intersect(*bounds, box) : std::optional<ChartBox>(box);
+    if (!clipped) continue;
+    out.shape_refs.push_back({i, cell_index});
+    out.shape_bounds.push_back(padded(*clipped));
   }
 }
 
@@ -198,6 +221,9 @@ PackedScene pack_scene(const Scene& scene) {
     out.spheres.push_back({to_float4(model::exp_origin(k, scene.spheres[s].center)),
                            float(scene.spheres[s].radius), scene.spheres[s].material,
                            emitting.sphere_emitter[s], 0});
+  for (const Shape& shape : scene.shapes)
+    out.shapes.push_back({to_float4(shape.params.a), to_float4(shape.params.b),
+                          float(shape.params.size), shape.kind, shape.material, 0});
   for (const PointLight& l : scene.lights)
     out.lights.push_back({to_float4(model::exp_origin(k, l.position)), to_float4(l.intensity)});
 
@@ -217,6 +243,9 @@ PackedScene pack_scene(const Scene& scene) {
     g.first_sphere_ref = uint32_t(out.sphere_refs.size());
     pack_cell_spheres(scene, cell, c, out);
     g.sphere_ref_count = uint32_t(out.sphere_refs.size()) - g.first_sphere_ref;
+    g.first_shape_ref = uint32_t(out.shape_refs.size());
+    pack_cell_shapes(scene, cell, c, out);
+    g.shape_ref_count = uint32_t(out.shape_refs.size()) - g.first_shape_ref;
     order_spatially(g.first_triangle, g.first_sphere_ref, out);
     packed.sphere_begin = g.first_sphere_ref;
     packed.sphere_count = g.sphere_ref_count;

@@ -1,7 +1,7 @@
 // The scene flattened into the arrays the shaders read (std430; the structs are
-// shaders/common/gpu_types.h's, which the shaders compile too): model-space spheres and
-// lights, and for every cell of the chart atlas its triangles and edge tubes (in the cell's
-// chart) and sphere bounding boxes. Pure data: built and tested without a device.
+// shaders/common/gpu_types.h's, which the shaders compile too): model-space spheres, shapes
+// and lights, and for every cell of the chart atlas its triangles and edge tubes (in the
+// cell's chart) and sphere and shape bounding boxes. Pure data: built and tested without a device.
 #pragma once
 
 #include <array>
@@ -23,6 +23,8 @@ using Float16 = std::array<float, 16>;
 using GpuMaterial = gpu::Material;
 using GpuSphere = gpu::Sphere;
 using GpuSphereRef = gpu::SphereRef;
+using GpuShape = gpu::Shape;
+using GpuShapeRef = gpu::ShapeRef;
 using GpuPointLight = gpu::PointLight;
 using GpuTriangle = gpu::TriangleInfo;
 using GpuCell = gpu::Cell;
@@ -38,6 +40,7 @@ struct GpuAabb {
 struct CellGeometry {
   uint32_t first_triangle = 0, triangle_count = 0;
   uint32_t first_sphere_ref = 0, sphere_ref_count = 0;
+  uint32_t first_shape_ref = 0, shape_ref_count = 0;
 };
 
 struct PackedScene {
@@ -52,6 +55,9 @@ struct PackedScene {
   std::vector<CellGeometry> cell_geometry;  // one per cell
   std::vector<GpuSphereRef> sphere_refs;    // grouped by cell
   std::vector<GpuAabb> sphere_bounds;       // one per sphere ref, in its cell's chart
+  std::vector<GpuShape> shapes;             // the analytic shapes (scene/shape.h), model space
+  std::vector<GpuShapeRef> shape_refs;      // grouped by cell
+  std::vector<GpuAabb> shape_bounds;        // one per shape ref, in its cell's chart
   std::vector<Float4> positions;            // chart coordinates of triangle vertices, w = 1
   std::vector<Float4> normals;              // one per position (zero when flat)
   std::vector<uint32_t> indices;            // three per triangle, into positions

@@ -80,7 +80,8 @@ PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
   f.spheres = !packed.sphere_refs.empty();
   f.triangles = !packed.triangles.empty();
   f.tubes = !packed.tubes.empty();
-  f.sphere_list = f.spheres && !f.triangles && f.crossing != Crossing::None &&
+  f.shapes = !packed.shape_refs.empty();
+  f.sphere_list = f.spheres && !f.triangles && !f.shapes && f.crossing != Crossing::None &&
                   std::all_of(packed.cells.begin(), packed.cells.end(), [](const GpuCell& c) {
                     return c.sphere_count <= kSphereListLength;
                   });
@@ -115,7 +116,7 @@ PipelineFeatures all_features(GeometryKind geometry) {
   f.variant = PipelineVariant::AllFeatures;
   f.crossing = Crossing::Isometry;
   f.multiple_charts = f.spheres = f.triangles = f.smooth_normals = f.internal_walls = true;
-  f.tubes = true;
+  f.tubes = f.shapes = true;
   f.paper = f.physical = f.point_lights = f.light_sampling = true;
   f.sphere_emitters = f.triangle_emitters = f.transmission = true;
   return f;
@@ -141,6 +142,7 @@ std::vector<std::string> PipelineFeatures::defines() const {
   flag(spheres, "HAS_SPHERES");
   flag(triangles, "HAS_TRIANGLES");
   flag(tubes && crossing != Crossing::None, "HAS_TUBES");
+  flag(shapes, "HAS_SHAPES");
   flag(sphere_list, "SPHERE_LIST");
   flag(single_cell, "SINGLE_CELL");
   flag(smooth_normals, "HAS_SMOOTH_NORMALS");
@@ -151,7 +153,7 @@ std::vector<std::string> PipelineFeatures::defines() const {
   flag(sphere_emitters, "HAS_SPHERE_EMITTERS");
   flag(triangle_emitters, "HAS_TRIANGLE_EMITTERS");
   flag(transmission, "HAS_TRANSMISSION");
-  flag(variant == PipelineVariant::Specialised && primitive_culling && spheres != triangles,
+  flag(variant == PipelineVariant::Specialised && primitive_culling && boxes() != triangles,
        "CULL_PRIMITIVES");
   flag(shared_cell_masks, "SHARED_CELL_MASKS");
   flag(internal_walls, "INTERNAL_WALLS");
@@ -173,6 +175,7 @@ std::vector<uint32_t> PipelineFeatures::bindings() const {
   add(triangles, {kPositionsBinding, kIndicesBinding, kTrianglesBinding});
   add(smooth_normals, {kNormalsBinding});
   add(tubes && crossing != Crossing::None, {kTubesBinding});
+  add(shapes, {kShapesBinding, kShapeRefsBinding});
   add(paper && point_lights, {kLightsBinding});
   add(crossing != Crossing::None || multiple_charts, {kCellsBinding});
   add(crossing != Crossing::None, {kCellFacesBinding});
@@ -198,6 +201,7 @@ std::string PipelineFeatures::summary() const {
   word(spheres, "spheres");
   word(triangles, "triangles");
   word(tubes, "tubes");
+  word(shapes, "shapes");
   word(sphere_list, "sphere-list");
   word(single_cell, "one-cell");
   word(smooth_normals, "smooth-normals");

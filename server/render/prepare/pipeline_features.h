@@ -35,6 +35,7 @@ struct PipelineFeatures {
   bool multiple_charts = false;  // cells charted about different points (S3's atlas)
   bool spheres = false, triangles = false, smooth_normals = false;
   bool tubes = false;  // the domain's edge tubes, intersected analytically
+  bool shapes = false;  // analytic shapes (scene/shape.h), on boxes like spheres
   // Cells with faces holding spheres alone, at most kSphereListLength each: a chart segment
   // tests its cell's spheres one by one (SPHERE_LIST) instead of traversing the acceleration
   // structure, whose setup costs more than a few analytic tests (on lavapipe 7 % of a path in
@@ -51,7 +52,7 @@ struct PipelineFeatures {
   bool sphere_emitters = false, triangle_emitters = false;
   bool transmission = false;             // the dielectric lobe
   // The device can skip a primitive type during traversal (SKIP_AABBS / SKIP_TRIANGLES): set
-  // by the caller, used where the scene lacks spheres or triangles.
+  // by the caller, used where the scene lacks boxes (spheres, shapes) or triangles.
   bool primitive_culling = false;
   // More than eight cells: ray masks select cell % 8, and candidates of the other cells
   // sharing the bit are rejected by cell (triangles then need any-hit checks). A requirement
@@ -62,6 +63,9 @@ struct PipelineFeatures {
   bool internal_walls = false;
   // Baked constants (specialised only): loop bounds the compiler can unroll or drop.
   uint32_t point_light_count = 0, emitter_count = 0, max_crossings = 0;
+
+  // The scene has boxes in its acceleration structure: spheres or shapes.
+  bool boxes() const { return spheres || shapes; }
 
   // The preprocessor defines, one "NAME" or "NAME=VALUE" each, in a fixed order.
   std::vector<std::string> defines() const;

@@ -28,6 +28,8 @@ enum SceneBinding : uint32_t {
   kEmittersBinding = BINDING_EMITTERS,
   kLightImagesBinding = BINDING_LIGHT_IMAGES,
   kTubesBinding = BINDING_TUBES,
+  kShapesBinding = BINDING_SHAPES,
+  kShapeRefsBinding = BINDING_SHAPE_REFS,
   kSceneBindingCount = BINDING_COUNT
 };
 
