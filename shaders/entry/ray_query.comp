@@ -9,7 +9,7 @@
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 #include "common/core.glsl"
-#include "primitives/shape_table.glsl"
+#include "primitives/shape_candidate.glsl"
 #include "primitives/sphere_candidate.glsl"
 
 // The closest (or, for shadows, any) hit along the chart segment o + s d, s in [0, sMax], in

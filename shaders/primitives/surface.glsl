@@ -6,7 +6,7 @@
 #if defined(HAS_TUBES)
 #include "geometry/capsule.glsl"
 #endif
-#include "primitives/shape_table.glsl"
+#include "primitives/shape_candidate.glsl"
 
 struct Surface {
   vec4 position;         // model point q

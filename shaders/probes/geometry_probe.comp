@@ -1,5 +1,5 @@
 #version 460
-// Test probe: runs every model-geometry, capsule, sampling, BSDF and random-number routine on a
+// Test probe: runs every model-geometry, capsule, shape, sampling, BSDF and random-number routine on a
 // buffer of cases, so that tests/render/ can hold the float GLSL against the double C++ twins
 // in server/geometry/ and tests/twins/. Compiled once per geometry like every entry point. One
 // invocation per case; it computes all outputs.
@@ -13,6 +13,8 @@ layout(local_size_x = 64) in;
 #include "geometry/model.glsl"
 #include "geometry/capsule.glsl"
 #include "common/gpu_types.h"
+#include "integrator/chart_ray.glsl"
+#include "primitives/shape_table.glsl"
 #include "materials/bsdf.glsl"
 
 // Layouts mirror ProbeCase and ProbeResult in tests/render/geometry_probe.h (std430).
@@ -32,6 +34,10 @@ struct ProbeCase {
   uvec4 rng;       // pixel, sample index, seed, pcgHash input
   vec4 capsuleA;   // a capsule's axis: xyz one end, w radius
   vec4 capsuleB;   // xyz the other end, w the largest chart parameter sMax
+  vec4 shapeA;     // a shape (primitives/shape_table.glsl): its vectors a and b,
+  vec4 shapeB;
+  vec4 shapeSize;  // x its size, y the tMax of its intersection
+  uvec4 shapeKind; // x its kind
 };
 
 struct ProbeResult {
@@ -70,6 +76,8 @@ struct ProbeResult {
                            // for pairs 0 and 1
   vec4 bsdf;               // bsdfEvaluate(probeMaterial(colour, uv.y), normal, normal,
                            // cosineSample): f, pdf
+  vec4 shapeHit;           // intersectShape(shape, p, v, 0, tMax)
+  vec4 shapeNormal;        // shapeNormal(shape, q)
 };
 
 // Diffuse, Phong (exponent 1 to 64) and mirror lobes in proportions the colour sets.
@@ -113,6 +121,11 @@ void main() {
   r.capsule = vec4(intersectCapsule(c.capsuleA.xyz, c.capsuleB.xyz, c.capsuleA.w, c.chart.xyz,
                                     c.normal.xyz, 0.0, c.capsuleB.w),
                    capsuleNormal(c.capsuleA.xyz, c.capsuleB.xyz, c.chart.xyz));
+
+  Shape shape = Shape(c.shapeA, c.shapeB, c.shapeSize.x, c.shapeKind.x, 0u, 0u);
+  r.shapeHit = vec4(intersectShape(shape.kind, shape.a, shape.b, shape.size, p, v, 0.0,
+                                   c.shapeSize.y), 0.0, 0.0, 0.0);
+  r.shapeNormal = shapeNormal(shape, q);
 
   r.areas = vec4(areaFactorBetween(p, q), sphereAreaFactor(geodesicDistance(p, q)), 0.0, 0.0);
 

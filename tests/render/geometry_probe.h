@@ -41,8 +41,10 @@ struct ProbeCase {
   F4 point, tangent, target, sphere, loose, params, plane, chart, normal, colour, uv;
   std::array<uint32_t, 4> rng;
   F4 capsule_a, capsule_b;  // a capsule (xyz, radius) and (xyz, sMax) for intersectCapsule
+  F4 shape_a, shape_b, shape_size;  // a shape's vectors; (size, tMax) for intersectShape
+  std::array<uint32_t, 4> shape_kind;  // x: its kind (shaders/common/shape_kinds.h)
 };
-static_assert(sizeof(ProbeCase) == 64 + 11 * 16 + 16 + 2 * 16);
+static_assert(sizeof(ProbeCase) == 64 + 11 * 16 + 16 + 2 * 16 + 4 * 16);
 
 struct ProbeResult {
   F4 scalars, chart_scalars, origin, geodesic, velocity, towards;
@@ -53,8 +55,9 @@ struct ProbeResult {
   F4 draws, reflected, triangle_sample, capsule, areas;
   std::array<uint32_t, 4> sobol, path_seeds;
   F4 bsdf;
+  F4 shape_hit, shape_normal;  // intersectShape(shape, p, v, 0, tMax); shapeNormal(shape, q)
 };
-static_assert(sizeof(ProbeResult) == 6 * 16 + 3 * 64 + 11 * 16 + 9 * 16);
+static_assert(sizeof(ProbeResult) == 6 * 16 + 3 * 64 + 11 * 16 + 9 * 16 + 2 * 16);
 
 constexpr double kUnitRoundoff = FLT_EPSILON / 2;
 constexpr float kFar = 1e30f;

@@ -3,12 +3,14 @@
 // the rendered float GLSL against the same closed forms: from a point at distance d outside
 // it, the horoball subtends an angular radius alpha with sin(alpha) = e^-d (in the upper
 // half-space model the horoball {z >= 1} seen from height e^-d: the geodesic leaving at angle
-// theta from the vertical rises to e^-d / sin(theta)), near the origin and 8 out.
+// theta from the vertical rises to e^-d / sin(theta)), near the origin and 8 out; and the float
+// GLSL against the twin, case by case, through the geometry probe.
 #include <cmath>
 #include <numbers>
 #include <random>
 
 #include "common/shape_kinds.h"
+#include "geometry_probe.h"
 #include "render_fixture.h"
 #include "scene/scene_isometry.h"
 #include "scene/shape.h"
@@ -112,6 +114,76 @@ TEST(Horosphere, ChartBoxHoldsTheHoroballInTheKleinChart) {
       EXPECT_NEAR(seen.hi[j], box->hi[j], 0.02) << "d " << d;
     }
   }
+}
+
+// The float GLSL (through the shape table, as the renderer calls it) against the double twin on
+// the same float inputs: rays from up to 1.5 from the origin at horospheres within 2 of it,
+// aimed at them (hitting, grazing, from inside) or anywhere. Hit or miss agree except within
+// 1e-3 of tangency (1 - <m, m>, intersect's discriminant), where a float rounding decides; the
+// arc length agrees to 1e-5 (1 + t) (worst seen 1.9e-6) and the normal at the hit point q to
+// 1e-6 w^2 |q| (worst 1.9e-7: q rounded to float lies u w^2 off the model).
+TEST(Horosphere, FloatIntersectionAndNormalMatchTheDoubleTwin) {
+  const ShapeKind& kind = shape_kind(SHAPE_HOROSPHERE);
+  ProbeCaseMaker maker(kH3, 21);
+  ModelSampler& sample = maker.sample();
+  std::vector<ProbeCase> cases;
+  for (int i = 0; i < 6000; ++i) {
+    ProbeCase c = maker.make();
+    const Vec4 p = sample.point(1.5);
+    const ShapeParams s = horosphere(sample.unit3(), sample.uniform(-2, 2));
+    Vec4 v = sample.tangent(p);
+    if (i % 3 == 0) {  // aimed near its ideal point, off by up to 0.8 sideways
+      const Vec4 towards = model::geodesic_direction(kH3, p, model::normalize_point(kH3, s.a));
+      v = model::normalize_tangent(kH3, p, towards + sample.uniform(0, 0.8) * sample.tangent(p));
+    }
+    c.point = f4(p);
+    c.tangent = f4(v);
+    c.shape_a = f4(s.a);
+    c.shape_size = {0, kFar, 0, 0};
+    c.shape_kind = {SHAPE_HOROSPHERE, 0, 0, 0};
+    cases.push_back(c);
+  }
+  // q: where the double twin meets the surface (on the float inputs), for the normal.
+  std::vector<double> hit(cases.size());
+  for (size_t i = 0; i < cases.size(); ++i) {
+    ProbeCase& c = cases[i];
+    ShapeParams s;
+    s.a = v4(c.shape_a);
+    hit[i] = kind.intersect(kH3, s, v4(c.point), v4(c.tangent), 0, 1e30);
+    c.target = std::isfinite(hit[i]) ? f4(model::geodesic_point(kH3, v4(c.point), v4(c.tangent), hit[i]))
+                                     : f4(model::origin());
+  }
+  const auto results = run_probe(kH3, cases);
+  int hits = 0, borderline = 0;
+  double worst_t = 0, worst_n = 0;
+  for (size_t i = 0; i < cases.size(); ++i) {
+    const Vec4 p = v4(cases[i].point), v = v4(cases[i].tangent), l = v4(cases[i].shape_a);
+    const double alpha = -model::inner(kH3, p, l), beta = model::inner(kH3, v, l);
+    const Vec4 m = l - alpha * p - beta * v;
+    if (std::abs(1 - model::inner(kH3, m, m)) < 1e-3) {  // grazing: either answer is right
+      ++borderline;
+      continue;
+    }
+    const double t = results[i].shape_hit[0];
+    ASSERT_EQ(std::isfinite(hit[i]), t < kFar) << "case " << i << " twin " << hit[i] << " glsl " << t;
+    if (!std::isfinite(hit[i])) continue;
+    ++hits;
+    worst_t = std::max(worst_t, std::abs(t - hit[i]) / (1 + hit[i]));
+    ShapeParams s;
+    s.a = l;
+    const Vec4 q = v4(cases[i].target);
+    const Vec4 n = kind.normal(kH3, s, q);
+    // Relative to |q|, the normal's float error grows with how far off the model the rounded
+    // q lies, u <q, q> ~ u w^2: held to that.
+    const double dn = max_abs(v4(results[i].shape_normal) - n) / max_abs(q) / (q.w * q.w);
+    worst_n = std::max(worst_n, dn);
+  }
+  EXPECT_GT(hits, 2000);
+  EXPECT_LT(borderline, 100);
+  EXPECT_LT(worst_t, 1e-5);
+  EXPECT_LT(worst_n, 1e-6);
+  std::printf("horosphere probe: %d hits, %d grazing skipped, worst |dt|/(1+t) %.2e, normal %.2e w^2\n",
+              hits, borderline, worst_t, worst_n);
 }
 
 // Covered pixels of the centre row against the pinhole projection of alpha.
