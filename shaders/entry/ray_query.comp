@@ -16,14 +16,22 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 // the given cell; (p, v) is the same ray in the cell's frame.
 ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool anyHit) {
   ++tracedRays;
+  ChartHit best = noChartHit();
 #if defined(SPHERE_LIST)
-  return nearestListedSphere(cell, p, v, sMax, anyHit);
-#else
+  // The cell's few spheres one by one; the acceleration structure holds its triangles alone,
+  // which only a hit nearer than the nearest sphere's can matter.
+  best = nearestListedSphere(cell, p, v, sMax, anyHit);
+#if !defined(HAS_TRIANGLES)
+  return best;
+#endif
+  if (anyHit && best.kind != HIT_NONE) return best;
+  sMax = min(sMax, best.s);
+#endif
+#if defined(HAS_TRIANGLES) || defined(TRACED_BOXES)
   rayQueryEXT q;
   uint flags = CELL_OPACITY_FLAGS | (anyHit ? gl_RayFlagsTerminateOnFirstHitEXT : 0u) |
                PRIMITIVE_CULLING_FLAGS;
   rayQueryInitializeEXT(q, uScene, flags, cellMask(cell), o, 0.0, d, sMax);
-  ChartHit best = noChartHit();
   while (rayQueryProceedEXT(q)) {
     uint candidate = rayQueryGetIntersectionInstanceCustomIndexEXT(q, false) +
                      rayQueryGetIntersectionPrimitiveIndexEXT(q, false);
@@ -33,7 +41,7 @@ ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool 
       continue;
     }
 #endif
-#if defined(HAS_SPHERES) || defined(HAS_SHAPES)
+#if defined(TRACED_BOXES)
     if (rayQueryGetIntersectionTypeEXT(q, false) != gl_RayQueryCandidateIntersectionAABBEXT)
       continue;
     bool committed = rayQueryGetIntersectionTypeEXT(q, true) != gl_RayQueryCommittedIntersectionNoneEXT;
@@ -54,7 +62,7 @@ ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool 
       continue;
     }
 #endif
-#if defined(HAS_SPHERES)
+#if defined(HAS_SPHERES) && !defined(SPHERE_LIST)
     SphereRef ref = sphereRefs[candidate];
 #if defined(SHARED_CELL_MASKS)
     if (ref.cell != cell) continue;
@@ -66,18 +74,18 @@ ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool 
 #endif
 #endif
   }
-  uint type = rayQueryGetIntersectionTypeEXT(q, true);
-  if (type == gl_RayQueryCommittedIntersectionNoneEXT) return noChartHit();
 #if defined(HAS_TRIANGLES)
-  if (type == gl_RayQueryCommittedIntersectionTriangleEXT)
+  if (rayQueryGetIntersectionTypeEXT(q, true) == gl_RayQueryCommittedIntersectionTriangleEXT)
     return ChartHit(HIT_TRIANGLE,
                     rayQueryGetIntersectionInstanceCustomIndexEXT(q, true) +
                         rayQueryGetIntersectionPrimitiveIndexEXT(q, true),
                     rayQueryGetIntersectionTEXT(q, true), FAR,
                     rayQueryGetIntersectionBarycentricsEXT(q, true));
 #endif
-  return best;  // the last generated box hit (sphere or shape) is the committed one
 #endif
+  // No triangle: the last generated box hit (the committed one), or the nearest listed
+  // sphere, or none.
+  return best;
 }
 
 #include "integrator/integrator.glsl"

@@ -5,9 +5,15 @@
 
 const float FAR = 1e30;
 
-// Traversal skips the primitive type a scene lacks, where the device allows it: boxes
-// (spheres, shapes) or triangles.
-#if defined(CULL_PRIMITIVES) && !defined(HAS_SPHERES) && !defined(HAS_SHAPES)
+// Boxes in the acceleration structure: shapes, and spheres unless each cell's are listed and
+// tested one by one beside a traversal of its triangles (PipelineFeatures::traced_boxes).
+#if defined(HAS_SHAPES) || (defined(HAS_SPHERES) && !(defined(SPHERE_LIST) && defined(HAS_TRIANGLES)))
+#define TRACED_BOXES
+#endif
+
+// Traversal skips the primitive type it never meets, where the device allows it: boxes or
+// triangles.
+#if defined(CULL_PRIMITIVES) && !defined(TRACED_BOXES)
 #define PRIMITIVE_CULLING_FLAGS gl_RayFlagsSkipAABBEXT
 #elif defined(CULL_PRIMITIVES) && !defined(HAS_TRIANGLES)
 #define PRIMITIVE_CULLING_FLAGS gl_RayFlagsSkipTrianglesEXT
@@ -42,7 +48,7 @@ struct ChartHit {
 
 ChartHit noChartHit() { return ChartHit(HIT_NONE, 0u, FAR, FAR, vec2(0.0)); }
 
-#if defined(CELL_CROSSING) || defined(MULTIPLE_CHARTS)
+#if defined(CELL_CROSSING) || defined(MULTIPLE_CHARTS) || defined(SPHERE_LIST)
 // A cell's record. In a space of one cell (SINGLE_CELL) every ray reads the same one, at an
 // index the compiler sees is the same for all: one load for a SIMD group, not a gather.
 Cell cellRecord(uint cell) {

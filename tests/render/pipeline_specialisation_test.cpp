@@ -142,8 +142,9 @@ TEST(PipelineFeatures, SpacesOfOneCellReadItAtAUniformIndex) {
   EXPECT_FALSE(all_features(GeometryKind::Hyperbolic).single_cell);
 }
 
-// Segments test their cell's spheres one by one where the cells have faces and hold spheres
-// alone, at most kSphereListLength each; the acceleration structure traces the rest.
+// Segments test their cell's spheres one by one where each cell holds at most
+// kSphereListLength (and no shapes), in a space with faces or of one cell; the acceleration
+// structure traces the triangles beside them.
 // (SpecialisedPipelines.EveryBundledSceneRendersAsWithAllFeatures holds the images: the
 // all-features pipeline traverses.)
 TEST(PipelineFeatures, SmallCellsOfSpheresAreTestedOneByOne) {
@@ -156,9 +157,11 @@ TEST(PipelineFeatures, SmallCellsOfSpheresAreTestedOneByOne) {
   };
   for (const char* name : {"mirrored-dodecahedron", "seifert-weber", "poincare-sphere"})
     EXPECT_TRUE(listed(bundled(name))) << name;
-  // Triangles in the cell, or no faces at all.
+  // Beside triangles, and in one cell without faces.
   for (const char* name : {"torus-cornell", "cornell-box", "hyperbolic-spheres"})
-    EXPECT_FALSE(listed(bundled(name))) << name;
+    EXPECT_TRUE(listed(bundled(name))) << name;
+  // No spheres; shapes, whose boxes the structure holds.
+  for (const char* name : {"furnace", "horospheres"}) EXPECT_FALSE(listed(bundled(name))) << name;
   EXPECT_FALSE(all_features(GeometryKind::Hyperbolic).sphere_list);
   // A 3-torus holding n spheres: listed up to kSphereListLength.
   const auto torus = [](uint32_t n) {

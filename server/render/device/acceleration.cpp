@@ -104,7 +104,8 @@ void AccelerationStructure::release() {
 }
 
 SceneAccelerationStructures SceneAccelerationStructures::build(VulkanContext& ctx,
-                                                               const PackedScene& scene) {
+                                                               const PackedScene& scene,
+                                                               bool sphere_boxes) {
   SceneAccelerationStructures out;
   std::vector<VkAccelerationStructureInstanceKHR> instances;
   out.positions = GpuBuffer::from_vector(ctx, scene.positions, kBuildInput);
@@ -153,7 +154,9 @@ SceneAccelerationStructures SceneAccelerationStructures::build(VulkanContext& ct
           ctx, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR, geometry, count));
       instances.push_back(instance_of(out.bottom.back(), first, mask, record));
     };
-    add_boxes(out.sphere_bounds, cell.first_sphere_ref, cell.sphere_ref_count, HIT_RECORD_SPHERES);
+    if (sphere_boxes)
+      add_boxes(out.sphere_bounds, cell.first_sphere_ref, cell.sphere_ref_count,
+                HIT_RECORD_SPHERES);
     add_boxes(out.shape_bounds, cell.first_shape_ref, cell.shape_ref_count, HIT_RECORD_SHAPES);
   }
 

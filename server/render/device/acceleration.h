@@ -47,7 +47,10 @@ struct SceneAccelerationStructures {
   std::vector<AccelerationStructure> bottom;
   AccelerationStructure top;
 
-  static SceneAccelerationStructures build(VulkanContext& ctx, const PackedScene& scene);
+  // Without sphere boxes when the shaders test each cell's spheres one by one
+  // (PipelineFeatures::sphere_list).
+  static SceneAccelerationStructures build(VulkanContext& ctx, const PackedScene& scene,
+                                           bool sphere_boxes = true);
 };
 
 }  // namespace geodesic

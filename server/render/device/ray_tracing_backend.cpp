@@ -24,15 +24,16 @@ struct HitGroup {
   const char* closest;
   const char* any;  // only where cells share mask bits
   const char* intersection;
-  bool PipelineFeatures::*present;
+  bool (*present)(const PipelineFeatures&);  // the kind is in the acceleration structure
 };
 constexpr HitGroup kHitGroups[] = {
     {VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR, "entry/triangle.rchit",
-     "entry/triangle.rahit", nullptr, &PipelineFeatures::triangles},
+     "entry/triangle.rahit", nullptr, [](const PipelineFeatures& f) { return f.triangles; }},
     {VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, "entry/sphere.rchit",
-     "entry/sphere.rahit", "entry/sphere.rint", &PipelineFeatures::spheres},
+     "entry/sphere.rahit", "entry/sphere.rint",
+     [](const PipelineFeatures& f) { return f.spheres && !(f.sphere_list && f.triangles); }},
     {VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, "entry/shape.rchit",
-     "entry/shape.rahit", "entry/shape.rint", &PipelineFeatures::shapes}};
+     "entry/shape.rahit", "entry/shape.rint", [](const PipelineFeatures& f) { return f.shapes; }}};
 constexpr uint32_t kHitRecords = std::size(kHitGroups);
 static_assert(HIT_RECORD_TRIANGLES == 0 && HIT_RECORD_SPHERES == 1 && HIT_RECORD_SHAPES == 2);
 
@@ -57,7 +58,7 @@ class RayTracingBackend : public TraceBackend {
     const PipelineFeatures& f = res_.features();
     std::vector<std::string> e{"entry/raygen.rgen", "entry/miss.rmiss"};
     for (const HitGroup& g : kHitGroups) {
-      if (!(f.*g.present)) continue;
+      if (!g.present(f)) continue;
       e.push_back(g.closest);
       if (g.intersection) e.push_back(g.intersection);
       if (f.shared_cell_masks) e.push_back(g.any);
@@ -82,7 +83,7 @@ class RayTracingBackend : public TraceBackend {
   std::vector<const HitGroup*> hit_groups() const {
     std::vector<const HitGroup*> present;
     for (const HitGroup& g : kHitGroups)
-      if (res_.features().*g.present) present.push_back(&g);
+      if (g.present(res_.features())) present.push_back(&g);
     return present;
   }
   uint32_t group_count() const { return 2u + uint32_t(hit_groups().size()); }
@@ -135,7 +136,7 @@ class RayTracingBackend : public TraceBackend {
       groups.push_back(group(g->type, none, g->closest, g->any, g->intersection));
 
     VkRayTracingPipelineCreateInfoKHR info{VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR};
-    if (f.primitive_culling && !f.boxes())
+    if (f.primitive_culling && !f.traced_boxes())
       info.flags |= VK_PIPELINE_CREATE_RAY_TRACING_SKIP_AABBS_BIT_KHR;
     if (f.primitive_culling && !f.triangles)
       info.flags |= VK_PIPELINE_CREATE_RAY_TRACING_SKIP_TRIANGLES_BIT_KHR;

@@ -81,7 +81,8 @@ PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
   f.triangles = !packed.triangles.empty();
   f.tubes = !packed.tubes.empty();
   f.shapes = !packed.shape_refs.empty();
-  f.sphere_list = f.spheres && !f.triangles && !f.shapes && f.crossing != Crossing::None &&
+  f.sphere_list = f.spheres && !f.shapes &&
+                  (f.crossing != Crossing::None || packed.cells.size() == 1) &&
                   std::all_of(packed.cells.begin(), packed.cells.end(), [](const GpuCell& c) {
                     return c.sphere_count <= kSphereListLength;
                   });
@@ -153,7 +154,7 @@ std::vector<std::string> PipelineFeatures::defines() const {
   flag(sphere_emitters, "HAS_SPHERE_EMITTERS");
   flag(triangle_emitters, "HAS_TRIANGLE_EMITTERS");
   flag(transmission, "HAS_TRANSMISSION");
-  flag(variant == PipelineVariant::Specialised && primitive_culling && boxes() != triangles,
+  flag(variant == PipelineVariant::Specialised && primitive_culling && traced_boxes() != triangles,
        "CULL_PRIMITIVES");
   flag(shared_cell_masks, "SHARED_CELL_MASKS");
   flag(internal_walls, "INTERNAL_WALLS");
@@ -177,7 +178,7 @@ std::vector<uint32_t> PipelineFeatures::bindings() const {
   add(tubes && crossing != Crossing::None, {kTubesBinding});
   add(shapes, {kShapesBinding, kShapeRefsBinding});
   add(paper && point_lights, {kLightsBinding});
-  add(crossing != Crossing::None || multiple_charts, {kCellsBinding});
+  add(crossing != Crossing::None || multiple_charts || sphere_list, {kCellsBinding});
   add(crossing != Crossing::None, {kCellFacesBinding});
   add(light_sampling, {kEmittersBinding, kLightImagesBinding});
   std::sort(b.begin(), b.end());

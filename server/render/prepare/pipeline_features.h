@@ -36,10 +36,11 @@ struct PipelineFeatures {
   bool spheres = false, triangles = false, smooth_normals = false;
   bool tubes = false;  // the domain's edge tubes, intersected analytically
   bool shapes = false;  // analytic shapes (scene/shape.h), on boxes like spheres
-  // Cells with faces holding spheres alone, at most kSphereListLength each: a chart segment
-  // tests its cell's spheres one by one (SPHERE_LIST) instead of traversing the acceleration
-  // structure, whose setup costs more than a few analytic tests (on lavapipe 7 % of a path in
-  // the mirrored dodecahedron). Specialised pipelines only.
+  // Cells holding at most kSphereListLength spheres each (and no shapes), in a space with
+  // faces or of one cell: a chart segment tests its cell's spheres one by one (SPHERE_LIST)
+  // and the acceleration structure holds only triangles, as a traversal's setup, or a box
+  // instance's, costs more than a few analytic tests (on lavapipe 7 % of a path in the
+  // mirrored dodecahedron). Specialised pipelines only.
   bool sphere_list = false;
   // A space of one cell with faces (every quotient but S3's atlas): the cell's record and its
   // faces are read at indices the same for every ray (SINGLE_CELL), which a CPU device loads
@@ -64,8 +65,10 @@ struct PipelineFeatures {
   // Baked constants (specialised only): loop bounds the compiler can unroll or drop.
   uint32_t point_light_count = 0, emitter_count = 0, max_crossings = 0;
 
-  // The scene has boxes in its acceleration structure: spheres or shapes.
+  // The scene has boxes (spheres or shapes); and boxes in its acceleration structure (spheres
+  // there unless listed).
   bool boxes() const { return spheres || shapes; }
+  bool traced_boxes() const { return (spheres && !(sphere_list && triangles)) || shapes; }
 
   // The preprocessor defines, one "NAME" or "NAME=VALUE" each, in a fixed order.
   std::vector<std::string> defines() const;
