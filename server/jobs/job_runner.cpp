@@ -109,6 +109,7 @@ void JobRunner::render() {
         if (checkpoint) renderer->restore(checkpoint->samples, checkpoint->sums);
       }))
     return;
+  service_.warm_up(*renderer, job.scene);  // its first slice would compile it, holding the device
 
   const double elapsed_before = checkpoint ? checkpoint->elapsed : 0;
   uint64_t non_finite_before = 0, truncated_before = 0;  // counted by earlier runs

@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <atomic>
 #include <condition_variable>
 #include <future>
 #include <map>
@@ -40,6 +41,8 @@ struct CachedPipeline {
   VkPipeline pipeline = VK_NULL_HANDLE;
   double build_seconds = 0;  // compile (or disk read) + driver build, when it was built
   size_t spirv_bytes = 0;    // over its shader stages
+  // Its code compiled ahead of its first dispatch (RenderService::warm_up).
+  mutable std::atomic<bool> warmed{false};
 };
 
 struct PipelineCacheStats {

@@ -1,6 +1,7 @@
 #include "render/service/render_service.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <stdexcept>
 #include <utility>
@@ -50,10 +51,26 @@ PreparedScene RenderService::prepare_scene(ResolvedScene resolved) const {
     if (!run_beside([&](VulkanContext& ctx) { prepared.renderer = std::make_unique<Renderer>(ctx, scene); }))
       throw std::runtime_error("render: the server is stopping");
   }
+  warm_up(*prepared.renderer, scene);
   prepared.scene = std::move(scene);
   prepared.name = std::move(resolved.name);
   prepared.kind = resolved.kind;
   return prepared;
+}
+
+void RenderService::warm_up(const Renderer& renderer, const Scene& scene) const {
+  if (!renderer.context().description().cpu || renderer.backend().pipeline().warmed.exchange(true))
+    return;
+  std::lock_guard hold(impl_->warm_mutex);
+  try {
+    if (!impl_->warm_device) impl_->warm_device = std::make_unique<VulkanContext>(impl_->device_selector);
+    Scene pixel = scene;
+    pixel.render.width = pixel.render.height = 1;
+    Renderer warm(*impl_->warm_device, pixel);
+    warm.add_samples(1);
+  } catch (const std::exception& e) {  // only time is lost: the first dispatch compiles it
+    std::fprintf(stderr, "geodesic: could not compile a pipeline ahead: %s\n", e.what());
+  }
 }
 
 PreparedScene RenderService::prepare_scene(const SceneSource& source) const {

@@ -130,6 +130,16 @@ class RenderService {
   PreparedScene prepare_scene(ResolvedScene scene) const;
   PreparedScene prepare_scene(const SceneSource& source) const;
 
+  // A CPU device (lavapipe) compiles a pipeline's code at its first dispatch, not when the
+  // pipeline is made, and holds the one queue that every session and job shares meanwhile (a
+  // second for a scene of 500 lights, when Mesa's shader cache does not have it yet). This
+  // compiles the pipeline of `renderer` (built for `scene`) once, by a dispatch of one pixel on
+  // a device of the service's own beside the shared one: the code reaches the shared device's
+  // first dispatch through Mesa's shader cache. Nothing to do on a GPU, which compiles when the
+  // pipeline is made. Beside the rendering: prepare_scene and render jobs call it, never the
+  // render thread.
+  void warm_up(const Renderer& renderer, const Scene& scene) const;
+
   // Opens a session on `scene` (the client's first view: the daemon prepares
   // kDefaultSceneName);
   // throws std::runtime_error when max_sessions are open, leaving `scene` as it was. A failed

@@ -59,6 +59,9 @@ struct RenderService::Impl {
   SessionId next_id = 1;
   SessionRota rota;
   bool stopping = false;
+  // warm_up's device (made on first use) and the lock its one queue is used under.
+  mutable std::mutex warm_mutex;
+  mutable std::unique_ptr<VulkanContext> warm_device;
   // Callers of run_beside working on the device now: the service ends after them.
   mutable int beside = 0;
   mutable std::condition_variable beside_done;
