@@ -47,8 +47,8 @@ struct SceneAccelerationStructures {
   std::vector<AccelerationStructure> bottom;
   AccelerationStructure top;
 
-  // Without sphere boxes when the shaders test each cell's spheres one by one
-  // (PipelineFeatures::sphere_list).
+  // Without sphere boxes where the shaders test each cell's spheres one by one beside the
+  // traversal (PipelineFeatures::traced_spheres).
   static SceneAccelerationStructures build(VulkanContext& ctx, const PackedScene& scene,
                                            bool sphere_boxes = true);
 };

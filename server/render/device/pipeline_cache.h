@@ -9,11 +9,11 @@
 // second request for the same one waits for that build instead of starting its own.
 #pragma once
 
+#include <atomic>
+#include <condition_variable>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
-#include <atomic>
-#include <condition_variable>
 #include <future>
 #include <map>
 #include <memory>

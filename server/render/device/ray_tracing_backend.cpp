@@ -31,7 +31,7 @@ constexpr HitGroup kHitGroups[] = {
      "entry/triangle.rahit", nullptr, [](const PipelineFeatures& f) { return f.triangles; }},
     {VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, "entry/sphere.rchit",
      "entry/sphere.rahit", "entry/sphere.rint",
-     [](const PipelineFeatures& f) { return f.spheres && !(f.sphere_list && f.triangles); }},
+     [](const PipelineFeatures& f) { return f.traced_spheres(); }},
     {VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, "entry/shape.rchit",
      "entry/shape.rahit", "entry/shape.rint", [](const PipelineFeatures& f) { return f.shapes; }}};
 constexpr uint32_t kHitRecords = std::size(kHitGroups);

@@ -50,10 +50,7 @@ SceneResources::SceneResources(VulkanContext& ctx, const Scene& scene, PipelineV
       uniforms_(make_uniforms(scene, packed_)) {
   features_.primitive_culling = ctx.description().primitive_culling;
   features_.shared_cell_masks = packed_.cells.size() > 8;
-  // Listed spheres are tested one by one beside the traversal of the triangles; without
-  // triangles nothing is traversed, and the sphere boxes keep the structure from being empty.
-  structures_ = SceneAccelerationStructures::build(
-      ctx, packed_, !(features_.sphere_list && features_.triangles));
+  structures_ = SceneAccelerationStructures::build(ctx, packed_, features_.traced_spheres());
   capacity_ = size_t(width()) * height();
   frame_ = GpuBuffer(ctx, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   std::memcpy(frame_.mapped(), &uniforms_, sizeof(uniforms_));

@@ -65,10 +65,11 @@ struct PipelineFeatures {
   // Baked constants (specialised only): loop bounds the compiler can unroll or drop.
   uint32_t point_light_count = 0, emitter_count = 0, max_crossings = 0;
 
-  // The scene has boxes (spheres or shapes); and boxes in its acceleration structure (spheres
-  // there unless listed).
-  bool boxes() const { return spheres || shapes; }
-  bool traced_boxes() const { return (spheres && !(sphere_list && triangles)) || shapes; }
+  // Spheres in the acceleration structure, as boxes: unless listed beside triangles (without
+  // triangles nothing is traversed, and their boxes keep the structure from being empty).
+  bool traced_spheres() const { return spheres && !(sphere_list && triangles); }
+  // Boxes in the acceleration structure: spheres there, and shapes.
+  bool traced_boxes() const { return traced_spheres() || shapes; }
 
   // The preprocessor defines, one "NAME" or "NAME=VALUE" each, in a fixed order.
   std::vector<std::string> defines() const;
