@@ -6,6 +6,7 @@
 #include <numbers>
 #include <numeric>
 
+#include "geometry/moebius.h"
 #include "scene/coxeter_orthoscheme.h"
 #include "scene/dirichlet_domain.h"
 #include "scene/generator_file.h"
@@ -179,6 +180,38 @@ std::vector<CatalogueEntry> build() {
                  coxeter_orthoscheme_generators(p, q, r), std::nullopt, orthoscheme_volume(p, q, r),
                  true});
   }
+  // Cusped: finite volume, not compact (ideal vertices in the Dirichlet domain). Moebius
+  // generators (geometry/moebius.h) in closed form; volumes from the SnapPea census.
+  const Complex omega(-0.5, std::sqrt(3.0) / 2);  // a primitive cube root of unity
+  auto moebius = [](Complex a, Complex b, Complex cc, Complex d, bool reverses = false) {
+    return moebius_isometry({{a, b, cc, d}, reverses});
+  };
+  c.push_back({"figure-eight", "Figure-eight knot complement (m004)", kH3,
+               "Riley's parabolic representation: z -> z + 1 and z -> z / (1 - omega z), the "
+               "Moebius matrices [[1, 1], [0, 1]] and [[1, 0], [-omega, 1]] with omega = "
+               "(-1 + sqrt -3) / 2",
+               {moebius(1, 1, 0, 1), moebius(1, 0, -omega, 1)}, std::nullopt, 2.029883212819307,
+               false});
+  c.push_back({"figure-eight-sister", "Figure-eight knot's sister (m003)", kH3,
+               "face pairings of two regular ideal tetrahedra (H1 = Z + Z/5, which tells it from "
+               "m004): the Moebius matrices [[0, 1], [-1, 1 + omega]] and [[-1 - omega, -1 - "
+               "omega], [1 - omega, 1]], relator y^-1 x^2 y^-3 x^2 y^-1 x",
+               {moebius(0, 1, -1, 1.0 + omega), moebius(-1.0 - omega, -1.0 - omega, 1.0 - omega, 1)},
+               std::nullopt, 2.029883212819307, false});
+  c.push_back({"gieseking", "Gieseking manifold (non-orientable)", kH3,
+               "one regular ideal tetrahedron (inf, 0, 1, zeta = 1 + omega), faces (0,1,2) -> "
+               "(3,1,0) and (0,2,3) -> (3,2,1) glued by the orientation-reversing z -> (a conj z "
+               "+ b) / (c conj z + d) of [[-omega, 0], [-1 - omega, 1 + omega]] and [[-omega, 1 + "
+               "omega], [-1 - omega, 2 + omega]], relator a^2 b^2 = b a",
+               {moebius(-omega, 0, -1.0 - omega, 1.0 + omega, true),
+                moebius(-omega, 1.0 + omega, -1.0 - omega, 2.0 + omega, true)},
+               std::nullopt, 1.0149416064096536, false});
+  c.push_back({"whitehead-link", "Whitehead link complement (m129)", kH3,
+               "two parabolic meridians of the 2-bridge link 8/3: the Moebius matrices [[1, 1], "
+               "[0, 1]] and [[1, 0], [-1 + i, 1]], relator a w = w a with w = b a b^-1 a^-1 "
+               "b^-1 a b",
+               {moebius(1, 1, 0, 1), moebius(1, 0, Complex(-1, 1), 1)}, std::nullopt,
+               3.663862376708876, false});
   return c;
 }
 
@@ -284,6 +317,13 @@ std::string catalogue_readme() {
       "orange into tetrahedra (p of them for L(p, 1), 4 for a mirrored lens), projective space\n"
       "by Voronoi cells; past eight, the renderer's cells share ray-mask bits and filter\n"
       "candidates by cell (docs/pipelines.md).\n\n"
+      "The figure-eight knot complement, its sister, the Gieseking manifold and the Whitehead\n"
+      "link complement are cusped: finite volume, not compact; their Dirichlet domains have\n"
+      "ideal vertices on the sphere at infinity (one cusp each, two for the link), cut off in\n"
+      "their scenes by horospheres. Any cusped manifold comes in from\n"
+      "SnapPy as the Moebius matrices it prints for `G.SL2C(g)` (G = M.fundamental_group(), g\n"
+      "over G.generators()) saved as a generator file (docs/scene-format.md, Cusped hyperbolic\n"
+      "spaces).\n\n"
       "| name | geometry | order | volume | Dirichlet domain | generators |\n"
       "|---|---|---|---|---|---|\n";
   for (const CatalogueEntry& e : catalogue()) {

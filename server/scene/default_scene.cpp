@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <numbers>
 
+#include "scene/cusp_neighbourhoods.h"
 #include "scene/generator_file.h"
 
 namespace geodesic {
@@ -20,8 +21,10 @@ Json material(const Vec3& colour) {
 }
 
 // Enough face crossings to see a few copies of the domain: in S3 a ray returns after 2 pi,
-// about pi / inradius domains; E3 and H3 images shrink (or fade) with distance.
-int crossings_for(GeometryKind kind, double inradius) {
+// about pi / inradius domains; E3 and H3 images shrink (or fade) with distance. A cusped
+// space's rays end on its horospheres, some only after many thin copies: the most.
+int crossings_for(GeometryKind kind, double inradius, bool cusped) {
+  if (cusped) return 64;
   if (kind != GeometryKind::Spherical) return 24;
   return std::clamp(static_cast<int>(std::ceil(std::numbers::pi / inradius)) + 8, 16, 64);
 }
@@ -34,7 +37,8 @@ Json default_scene_document(const std::string& title, GeometryKind kind, Json ma
   // A domain cut into pieces (chart_atlas.h) has no edges in one chart to draw; the walls
   // between its pieces do not count as crossings.
   const bool pieces = !domain.manifold.pieces.empty();
-  if (!manifold.contains("max_crossings")) manifold["max_crossings"] = crossings_for(kind, r);
+  if (!manifold.contains("max_crossings"))
+    manifold["max_crossings"] = crossings_for(kind, r, domain.cusps > 0);
   // Sphere centres at 0.55 r and radii 0.18 r keep every sphere inside the in-ball; the light's
   // intensity goes with r^2, as its distance to the spheres does (small domains are nearly flat).
   const Vec3 red = normalize(Vec3{0.5, 0.1, -0.85}) * (0.55 * r);
@@ -44,18 +48,31 @@ Json default_scene_document(const std::string& title, GeometryKind kind, Json ma
   for (const auto& [name, centre] : {std::pair{"red", red}, {"green", green}, {"blue", blue}})
     objects.push_back({{"type", "sphere"}, {"material", name}, {"center", vec(centre)},
                        {"radius", 0.18 * r}});
-  if (!pieces)
+  // A cusped domain's edges run out to the sphere at infinity, where no tube fits the chart;
+  // its cusps are cut off by horospheres of a faintly glowing sky instead.
+  const std::vector<CuspHorosphere> cusps =
+      domain.cusps > 0 ? cusp_horospheres(domain.manifold) : std::vector<CuspHorosphere>{};
+  for (const CuspHorosphere& c : cusps)
+    objects.push_back({{"type", "horosphere"}, {"material", "cusp" + std::to_string(c.cusp)},
+                       {"direction", vec(c.direction)}, {"distance", c.distance}});
+  if (!pieces && cusps.empty())
     objects.push_back({{"type", "domain_edges"}, {"material", "edge"}, {"radius", 0.02 * r}});
+  Json materials = {{"edge", {{"ambient", vec({0.85, 0.7, 0.35})}, {"diffuse", vec({0.85, 0.7, 0.35})}}},
+                    {"red", material({0.68, 0.13, 0.08})},
+                    {"green", material({0.13, 0.6, 0.17})},
+                    {"blue", material({0.13, 0.26, 0.68})}};
+  const Vec3 skies[] = {{0.55, 0.7, 0.95}, {0.95, 0.65, 0.45}, {0.6, 0.9, 0.6}};
+  for (int k = 0; k < domain.cusps; ++k) {
+    const Vec3 sky = skies[k % 3];
+    materials["cusp" + std::to_string(k)] = {
+        {"ambient", vec(sky)}, {"diffuse", vec(sky * 0.5)}, {"emission", vec(sky * 0.3)}};
+  }
   return {
       {"name", title},
       {"geometry", geometry_name(kind)},
       {"manifold", manifold},
       {"camera", {{"position", vec({0, 0, 0})}, {"look_at", vec({0, 0, -0.5 * r})}, {"fov_y", 80}}},
-      {"materials",
-       {{"edge", {{"ambient", vec({0.85, 0.7, 0.35})}, {"diffuse", vec({0.85, 0.7, 0.35})}}},
-        {"red", material({0.68, 0.13, 0.08})},
-        {"green", material({0.13, 0.6, 0.17})},
-        {"blue", material({0.13, 0.26, 0.68})}}},
+      {"materials", materials},
       {"objects", objects},
       {"lights", Json::array({{{"type", "point"},
                                {"position", vec(Vec3{0.1, 0.6, 0.2} * r)},

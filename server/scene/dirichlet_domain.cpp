@@ -36,8 +36,12 @@ constexpr std::size_t kMaxCuts = 64;
 // The one answer for a discrete group with a non-compact quotient; `how` (in parentheses, when
 // given) says how it was found.
 [[noreturn]] void fail_unbounded(GeometryKind kind, const std::string& how = "") {
+  const std::string why = kind == GeometryKind::Hyperbolic
+                              ? " has infinite volume (the domain reaches the sphere at infinity "
+                                "in more than the isolated points of cusps)"
+                              : " is not compact";
   fail(std::string("the Dirichlet domain is unbounded: the quotient of ") + geometry_name(kind) +
-       " space by these generators is not compact" + (how.empty() ? "" : " (" + how + ")"));
+       " space by these generators" + why + (how.empty() ? "" : " (" + how + ")"));
 }
 
 // The bisector of the origin and a = g . origin, as a chart plane with the origin inside:
@@ -63,7 +67,8 @@ struct Cut {
 struct Cell {
   std::vector<Cut> cuts;  // only the planes that bound a face
   Polyhedron polyhedron;
-  double circumradius = INFINITY;
+  double circumradius = INFINITY;  // of the finite vertices
+  int ideal_vertices = 0;          // H3: vertices on the sphere at infinity (cusps' tips)
 };
 
 // The Dirichlet cell of the enumerated elements (clip_planes: bisectors nearest first; those
@@ -77,14 +82,20 @@ Cell dirichlet_cell(GeometryKind kind, const GroupOrbit& orbit, double tolerance
   std::vector<ChartPlane> planes;
   for (const Cut& c : candidates) planes.push_back(c.plane);
   const ClippedPolyhedron clipped = clip_planes(
-      planes, tolerance, kind == GeometryKind::Hyperbolic ? 1.0 : INFINITY, kMaxCuts);
+      planes, tolerance, kind == GeometryKind::Hyperbolic ? 1 + kIdealTolerance : INFINITY,
+      kMaxCuts);
   Cell cell;
   cell.polyhedron = clipped.polyhedron;
   for (int k : clipped.kept) cell.cuts.push_back(candidates[k]);
   if (!cell.polyhedron.bounded || cell.polyhedron.vertices.empty()) return cell;
   cell.circumradius = 0;
-  for (const Vec3& v : cell.polyhedron.vertices)
+  for (const Vec3& v : cell.polyhedron.vertices) {
+    if (ideal_vertex(kind, v)) {
+      ++cell.ideal_vertices;
+      continue;
+    }
     cell.circumradius = std::max(cell.circumradius, displacement(kind, model::lift(kind, v)));
+  }
   return cell;
 }
 
@@ -111,6 +122,30 @@ Manifold manifold_of(GeometryKind kind, const GroupOrbit& orbit, const Cell& cel
   m.name = "generators";
   validate_manifold(kind, m, tolerance);
   return m;
+}
+
+// Whether g is a product of the face pairings of m: g . origin walked back into the domain,
+// across the face it lies farthest beyond each time, comes to the origin itself. Each step
+// brings the point nearer the origin (the face is the bisector of the origin and an image of
+// it that the point is nearer to), so the walk ends. A cusped cell has no circumradius to bound
+// the elements that could cut it; this is what tells it is complete instead: its pairings
+// generate the group (then, with validate_manifold's edge cycles, Poincare's theorem makes the
+// cell a fundamental domain, and so the Dirichlet domain).
+bool generated_by_pairings(GeometryKind kind, const Manifold& m, const Mat4& g) {
+  Vec4 p = g * model::origin();
+  for (int step = 0; step < 4096; ++step) {
+    int worst = -1;
+    double beyond = 1e-9;
+    const Vec3 x = p.xyz() / p.w;
+    for (std::size_t f = 0; f < m.faces.size(); ++f)
+      if (const double d = dot(m.faces[f].normal, x) - m.faces[f].delta; d > beyond) {
+        beyond = d;
+        worst = static_cast<int>(f);
+      }
+    if (worst < 0) return displacement(kind, p) < 1e-6;
+    p = model::normalize_point(kind, m.faces[worst].pairing * p);
+  }
+  return false;
 }
 
 struct Attempt {
@@ -157,12 +192,29 @@ Attempt attempt(GeometryKind kind, const std::vector<Mat4>& generators, const Ve
     }
     cell = dirichlet_cell(kind, *orbit, options.tolerance);
     const double needed = 2 * cell.circumradius;
-    if (orbit->complete() || (cell.polyhedron.bounded && needed <= radius)) break;
+    bool closed = orbit->complete() || (cell.polyhedron.bounded && needed <= radius);
+    if (closed && cell.ideal_vertices > 0) {  // cusps: closed once the pairings make the group
+      try {
+        double error = 0;
+        const Manifold m = manifold_of(kind, *orbit, cell, options.tolerance, error);
+        closed = std::all_of(moved.begin(), moved.end(),
+                             [&](const Mat4& g) { return generated_by_pairings(kind, m, g); });
+      } catch (const SceneError&) {
+        closed = false;  // a face without its partner yet: more elements
+      }
+    }
+    if (closed) break;
     if (growth == kMaxGrowth) break;
     if (kind == GeometryKind::Hyperbolic && radius >= kHyperbolicReach) {
       if (!cell.polyhedron.bounded)
         fail_unbounded(kind, "the cell was still open at distance " +
                                  std::to_string(int(kHyperbolicReach)) + " from the base point");
+      if (cell.ideal_vertices > 0)
+        fail("the cell with " + std::to_string(cell.ideal_vertices) +
+             " ideal vertices (cusps) found within distance " +
+             std::to_string(int(kHyperbolicReach)) +
+             " of the base point is not a fundamental domain: its face pairings do not "
+             "generate the group, or do not close up around its edges");
       break;
     }
     radius = std::isfinite(needed) ? std::max(needed * 1.01, radius * 1.25) : radius * 2;
@@ -182,6 +234,7 @@ Attempt attempt(GeometryKind kind, const std::vector<Mat4>& generators, const Ve
   for (const Cut& c : cell.cuts)
     a.domain.inradius = std::min(a.domain.inradius, orbit->elements()[c.element].displacement / 2);
   a.domain.volume = domain_volume(kind, a.domain.manifold.domain);
+  a.domain.cusps = static_cast<int>(cusps(kind, a.domain.manifold, options.tolerance).size());
   return a;
 }
 

@@ -7,7 +7,11 @@
 //
 // The group is enumerated breadth-first over words in the generators and their inverses, in
 // order of displacement d(b, g b), until every element that could cut the cell (displacement
-// at most twice the cell's circumradius) is known. Each product is re-orthonormalised in the
+// at most twice the cell's circumradius) is known. In H3 the domain may have ideal vertices on
+// the sphere at infinity, the tips of cusps (a knot complement's): finite volume, not compact.
+// Such a cell is complete once its face pairings generate the group (each generator, applied
+// to b, walks back to b across the cell's faces); a cell that reaches the sphere in more than
+// points has infinite volume and is refused. Each product is re-orthonormalised in the
 // model's form, so the O(3,1) round-off that compounds along long words in H3 stays at one
 // product's worth; `product_drift` reports the error that re-orthonormalisation removed.
 //
@@ -40,7 +44,8 @@ struct DirichletDomain {
   std::size_t elements = 0;     // group elements enumerated
   bool finite = false;          // every element was found (the group order is `elements`)
   double inradius = 0;          // distance from the base point to the nearest face
-  double circumradius = 0;      // ... to the farthest vertex
+  double circumradius = 0;      // ... to the farthest finite vertex
+  int cusps = 0;                // H3: classes of ideal vertices (manifold.h cusps())
   double volume = 0;            // of the domain: the manifold's volume
   double product_drift = 0;     // largest isometry_error / |g|^2 of a product before re-orthonormalising
   double isometry_error = 0;    // largest isometry_error of a face pairing
@@ -50,7 +55,8 @@ struct DirichletDomain {
 // In S3, a group whose every domain crosses the chart's horizon (it preserves a great circle:
 // projective space, L(p, +-1), mirrored lenses) gets its domain cut into pieces charted apart
 // (scene/chart_atlas.h). Throws SceneError ("generators: reason") when the group is too large
-// to enumerate, leaves the domain unbounded (a non-compact quotient), needs more chart pieces
+// to enumerate, leaves the domain unbounded (a non-compact quotient in E3 and S3, one of infinite
+// volume in H3), needs more chart pieces
 // than the renderer has cells, or when the result fails validate_manifold.
 DirichletDomain dirichlet_domain(GeometryKind kind, const std::vector<Mat4>& generators,
                                  const DirichletOptions& options = {});

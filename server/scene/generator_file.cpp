@@ -8,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "geometry/moebius.h"
+#include "scene/moebius_text.h"
 #include "scene/scene.h"
 
 namespace geodesic {
@@ -209,9 +211,14 @@ GeneratorSet classify(const std::vector<RawMatrix>& raw, const std::string& sour
 
 GeneratorSet parse_generators(std::string_view text, const std::string& source) {
   const std::string bare = without_comments(without_bom(text));
-  GeneratorSet set = classify(bare.find('[') != std::string::npos ? read_snappy(bare, source)
-                                                                  : read_gen(bare, source),
-                              source);
+  std::vector<RawMatrix> raw;
+  if (looks_like_moebius(bare)) {
+    for (const MoebiusText& m : read_moebius(bare, source))
+      raw.push_back({moebius_isometry(m.t), m.line});
+  } else {
+    raw = bare.find('[') != std::string::npos ? read_snappy(bare, source) : read_gen(bare, source);
+  }
+  GeneratorSet set = classify(raw, source);
   set.title = first_comment(without_bom(text));
   return set;
 }

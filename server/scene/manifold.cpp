@@ -84,19 +84,37 @@ double dihedral(GeometryKind kind, const std::vector<DomainFace>& faces, const P
   return kPi - std::acos(std::clamp(c, -1.0, 1.0));
 }
 
-// The domain's vertices as model points, and lookup of a model point among them.
+// The domain's vertices as model points, and lookup of a model point among them. An ideal
+// vertex (a cusp, polyhedron.h) is the null vector (chart point, 1); its images are compared
+// in the chart, finite ones by geodesic distance.
 struct LiftedVertices {
   GeometryKind kind;
   std::vector<Vec4> points;
+  std::vector<bool> ideal;
 
   LiftedVertices(GeometryKind k, const Polyhedron& p) : kind(k) {
-    for (const Vec3& v : p.vertices) points.push_back(model::lift(k, v));
+    for (const Vec3& v : p.vertices) {
+      ideal.push_back(ideal_vertex(k, v));
+      points.push_back(ideal.back() ? Vec4(v, 1) : model::lift(k, v));
+    }
   }
-  // Index of the vertex nearest x among `candidates`, and its distance.
-  std::pair<int, double> nearest(const Vec4& x, const std::vector<int>& candidates) const {
+  // The image of vertex i under g.
+  Vec4 image(const Mat4& g, int i) const {
+    const Vec4 x = g * points[i];
+    return ideal[i] ? x / x.w : model::normalize_point(kind, x);
+  }
+  double distance(const Vec4& x, int i) const {
+    return ideal[i] ? length(x.xyz() / x.w - points[i].xyz())
+                    : model::geodesic_distance(kind, x, points[i]);
+  }
+  // Index of the vertex nearest the image of vertex `from` under g among `candidates` (ideal
+  // or finite alike), and its distance.
+  std::pair<int, double> nearest(const Mat4& g, int from, const std::vector<int>& candidates) const {
+    const Vec4 x = image(g, from);
     std::pair<int, double> best{-1, INFINITY};
     for (int i : candidates) {
-      const double d = model::geodesic_distance(kind, x, points[i]);
+      if (ideal[i] != ideal[from]) continue;
+      const double d = distance(x, i);
       if (d < best.second) best = {i, d};
     }
     return best;
@@ -147,8 +165,8 @@ std::vector<EdgeCycle> cycles_of(GeometryKind kind, const std::vector<DomainFace
         const Mat4& g = faces[f].pairing;
         cycle.transformation = g * cycle.transformation;
         const int p = faces[f].partner;
-        const auto a = lifted.nearest(g * lifted.points[domain.edges[e][0]], all_vertices);
-        const auto b = lifted.nearest(g * lifted.points[domain.edges[e][1]], all_vertices);
+        const auto a = lifted.nearest(g, domain.edges[e][0], all_vertices);
+        const auto b = lifted.nearest(g, domain.edges[e][1], all_vertices);
         const int image = find_edge(a.first, b.first);
         if (a.second > slack || b.second > slack || image < 0 ||
             std::find(faces_of_edge[image].begin(), faces_of_edge[image].end(), p) ==
@@ -194,9 +212,8 @@ void check_pairing(GeometryKind kind, const std::vector<DomainFace>& faces,
                      " and " + std::to_string(theirs.size()) + " vertices)");
   double off = 0, moved = 0;
   for (int i : mine) {
-    const Vec4 image = model::normalize_point(kind, face.pairing * lifted.points[i]);
-    off = std::max(off, lifted.nearest(image, theirs).second);
-    moved = std::max(moved, model::geodesic_distance(kind, image, lifted.points[i]));
+    off = std::max(off, lifted.nearest(face.pairing, i, theirs).second);
+    moved = std::max(moved, lifted.distance(lifted.image(face.pairing, i), i));
   }
   if (off > slack)
     throw SceneError(path + ".pairing: " + onto + " (vertex off by " + sci(off) + ")");
@@ -297,6 +314,35 @@ Manifold make_seifert_weber_space() {
   return twisted_dodecahedron("seifert-weber", GeometryKind::Hyperbolic, 2 * kPi / 5, 3 * kPi / 5);
 }
 
+std::vector<std::vector<int>> cusps(GeometryKind kind, const Manifold& m, double tolerance) {
+  const LiftedVertices lifted(kind, m.domain);
+  std::vector<int> parent(m.domain.vertices.size());
+  for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
+  auto root = [&](int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  for (std::size_t f = 0; f < m.faces.size(); ++f)
+    for (int i : m.domain.faces[f]) {
+      if (!lifted.ideal[i]) continue;
+      const auto [j, off] =
+          lifted.nearest(m.faces[f].pairing, i, m.domain.faces[m.faces[f].partner]);
+      if (j >= 0 && off <= tolerance * 100) parent[root(i)] = root(j);
+    }
+  std::vector<std::vector<int>> classes;
+  std::vector<int> index(parent.size(), -1);
+  for (std::size_t i = 0; i < parent.size(); ++i) {
+    if (!lifted.ideal[i]) continue;
+    int& k = index[root(static_cast<int>(i))];
+    if (k < 0) {
+      k = static_cast<int>(classes.size());
+      classes.emplace_back();
+    }
+    classes[k].push_back(static_cast<int>(i));
+  }
+  return classes;
+}
+
 double dihedral_angle(GeometryKind kind, const Manifold& m, int e) {
   return dihedral(kind, m.faces, m.domain, e);
 }
@@ -340,10 +386,11 @@ void validate_manifold(GeometryKind kind, const Manifold& m, double tol) {
   if (kind == GeometryKind::Hyperbolic)
     for (std::size_t i = 0; i < domain.vertices.size(); ++i) {
       const double r = length(domain.vertices[i]);
-      if (r >= 1 - tol)
-        throw SceneError("manifold: the domain is unbounded in hyperbolic space (vertex " +
+      if (r > 1 + kIdealTolerance)
+        throw SceneError("manifold: the domain reaches beyond the sphere at infinity (vertex " +
                          std::to_string(i) + " at Klein radius " + std::to_string(r) +
-                         " >= 1; the domain must be compact)");
+                         " > 1): its volume is infinite; only cusps, vertices on the sphere, are "
+                         "allowed");
     }
 
   const double slack = tol * scale * 100;  // vertex matching, after a few products

@@ -81,11 +81,16 @@ struct EdgeCycle {
 // Throws SceneError when a pairing does not map an edge onto an edge.
 std::vector<EdgeCycle> edge_cycles(GeometryKind kind, const Manifold& m, double tolerance = 1e-9);
 
+// The cusps of an H3 domain with ideal vertices (polyhedron.h): the classes of ideal vertices
+// under the face pairings, each a list of vertex indices. Empty for a compact domain.
+std::vector<std::vector<int>> cusps(GeometryKind kind, const Manifold& m, double tolerance = 1e-9);
+
 // Interior dihedral angle of the domain at edge e (radians), measured in the model.
 double dihedral_angle(GeometryKind kind, const Manifold& m, int e);
 
 // Throws SceneError ("manifold...: reason") when the face list is not a valid fundamental
-// domain: unbounded or non-compact domain, a face that bounds nothing, a pairing that is not an
+// domain: unbounded domain or one of infinite volume (ideal vertices, cusps, are allowed in H3;
+// polyhedron.h), a face that bounds nothing, a pairing that is not an
 // isometry or does not carry its face onto its partner (vertex set and inward direction),
 // non-mutual pairings, or an edge cycle that does not close up. `tolerance` is relative: 1e-9
 // for the closed-form bundled manifolds, about 1e-6 for matrices typed into a scene file.

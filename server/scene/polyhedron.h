@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -31,6 +32,14 @@ struct Polyhedron {
                                                // does not bound a face)
   std::vector<std::vector<int>> vertex_faces;  // per vertex: the planes through it
 };
+
+// A vertex of an H3 polyhedron at Klein radius 1 (to this tolerance) is ideal: a point of the
+// sphere at infinity, the tip of a cusp of finite volume. Finite vertices that close are
+// farther than distance 8 from the chart's centre, beyond any domain the loader builds.
+inline constexpr double kIdealTolerance = 1e-7;
+inline bool ideal_vertex(GeometryKind kind, const Vec3& v) {
+  return kind == GeometryKind::Hyperbolic && std::abs(length(v) - 1) <= kIdealTolerance;
+}
 
 // Bounded with no vertices means the half-spaces have no common point. `tolerance` (relative
 // to the largest |delta|) decides which planes pass through a vertex.
