@@ -22,6 +22,18 @@ double outside(GeometryKind k, const std::vector<Cell>& cells, int c, const Vec4
   return worst;
 }
 
+// Whether the H3 geodesic (p, v) runs into an ideal vertex of the (one-cell) domain: its end
+// at infinity, the null vector p + v, is the vertex. Such a geodesic stays in the cusp's
+// chimney, between faces that meet it only at infinity: it leaves the cell, if at all, at
+// infinite distance (the renderer ends it on the cusp's horosphere).
+bool runs_into_cusp(const Scene& scene, const Cell& cell, const CellRay& ray) {
+  if (scene.geometry != GeometryKind::Hyperbolic) return false;
+  const Vec4 end = cell.chart_isometry * (ray.p + ray.v);
+  for (const Vec3& v : scene.manifold.domain.vertices)
+    if (ideal_vertex(scene.geometry, v) && length(end.xyz() / end.w - v) < 1e-6) return true;
+  return false;
+}
+
 TEST(CatalogueScenes, RenderFiniteAndEveryRayEndsInTheCell) {
   for (const CatalogueEntry& entry : catalogue()) {
     SCOPED_TRACE(entry.name);
@@ -32,7 +44,7 @@ TEST(CatalogueScenes, RenderFiniteAndEveryRayEndsInTheCell) {
     // Double twin: a 9 x 9 fan of camera rays through max_crossings faces each.
     const auto cells = build_cells(scene);
     const double tan_half = std::tan(scene.camera.fov_y_degrees * M_PI / 360);
-    int crossings = 0;
+    int crossings = 0, into_cusps = 0;
     for (int i = 0; i < 81; ++i) {
       const Vec3 d = normalize({(i % 9 - 4) / 4.0 * tan_half, (i / 9 - 4) / 4.0 * tan_half, -1});
       const CameraPlacement camera = place_camera(entry.kind, cells, scene.camera.pose);
@@ -40,15 +52,20 @@ TEST(CatalogueScenes, RenderFiniteAndEveryRayEndsInTheCell) {
       ASSERT_LT(outside(entry.kind, cells, ray.cell, ray.p), 1e-9) << "the camera";
       for (int c = 0; c < scene.manifold.max_crossings; ++c) {
         const CellExit exit = exit_cell(entry.kind, cells, ray);
-        ASSERT_GE(exit.face, 0);
-        ASSERT_TRUE(std::isfinite(exit.t));
+        if ((exit.face < 0 || !std::isfinite(exit.t)) && runs_into_cusp(scene, cells[ray.cell], ray)) {
+          ++into_cusps;
+          break;
+        }
+        ASSERT_GE(exit.face, 0) << "ray " << i << " after crossing " << c;
+        ASSERT_TRUE(std::isfinite(exit.t)) << "ray " << i << " after crossing " << c << ": face " << exit.face << " t " << exit.t;
         ray = cross_face(entry.kind, cells, ray, exit.face, exit.t);
         ASSERT_LT(outside(entry.kind, cells, ray.cell, ray.p), 1e-9)
             << "ray " << i << " after crossing " << c;
         ++crossings;
       }
     }
-    EXPECT_EQ(crossings, 81 * scene.manifold.max_crossings);
+    if (into_cusps == 0) EXPECT_EQ(crossings, 81 * scene.manifold.max_crossings);
+    EXPECT_LE(into_cusps, 1) << "only the central ray aims at a cusp";
 
     scene.render.width = scene.render.height = 12;
     try {

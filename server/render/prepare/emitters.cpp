@@ -91,8 +91,9 @@ double triangle_area(GeometryKind k, const Vec4& a, const Vec4& b, const Vec4& c
 
 double domain_circumradius(GeometryKind k, const Manifold& m) {
   double r = 0;
-  for (const Vec3& x : m.domain.vertices)
-    r = std::max(r, model::geodesic_distance(k, model::origin(), model::lift(k, x)));
+  for (const Vec3& x : m.domain.vertices)  // a cusp's ideal vertex is infinitely far: skipped
+    if (!ideal_vertex(k, x))
+      r = std::max(r, model::geodesic_distance(k, model::origin(), model::lift(k, x)));
   return r;
 }
 

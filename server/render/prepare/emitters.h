@@ -54,7 +54,8 @@ double triangle_area(GeometryKind k, const Vec4& a, const Vec4& b, const Vec4& c
 std::vector<Mat4> group_elements_within(GeometryKind k, const Manifold& m, double radius,
                                         std::size_t max_elements = 4096);
 
-// Largest geodesic distance from the origin to a vertex of the fundamental domain.
+// Largest geodesic distance from the origin to a finite vertex of the fundamental domain (a
+// cusp's ideal vertices are skipped).
 double domain_circumradius(GeometryKind k, const Manifold& m);
 
 }  // namespace geodesic
