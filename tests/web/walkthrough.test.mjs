@@ -452,6 +452,29 @@ test('a .gen file picked on the page opens its space, W walks through it, and a 
   await page.screenshot({ path: path.join(SCREENSHOT_DIR, 'walkthrough-generators.png') });
 });
 
+test('a cusped space opens from SnapPy\'s Moebius matrices, and the picker lists the knot complements', async () => {
+  // The figure-eight knot complement as SnapPy prints G.SL2C(g) for its two generators.
+  const file = path.join(os.tmpdir(), `geodesic-m004-${process.pid}.txt`);
+  fs.writeFileSync(file, '# Figure-eight knot complement, from SnapPy\n[1  1]\n[0  1]\n\n' +
+                         '[1  0]\n[0.5 - 0.86602540378443865*I  1]\n');
+  await page.setInputFiles('#generator-file', file);
+  fs.unlinkSync(file);
+  const title = 'Figure-eight knot complement, from SnapPy';
+  await waitForShownFrame(page, 2, (f) => f.scene === title);
+  const scene = receivedOfType('scene').at(-1);
+  assert.equal(scene.name, title);
+  assert.equal(scene.source, 'generators');
+  assert.equal(scene.geometry, 'hyperbolic');
+  // Not black: the camera sees the cusps' glowing horospheres and the spheres' copies.
+  const { blocks } = await canvasBlocks(page);
+  const mean = blocks.reduce((a, b) => a + b, 0) / blocks.length;
+  assert.ok(mean > 20, `the cusped view is dark: mean block value ${mean}`);
+  const options = await page.$$eval('#scene-picker option', (list) => list.map((o) => o.value));
+  for (const name of ['figure-eight-knot', 'whitehead-link'])
+    assert.ok(options.includes(name), `the picker lists ${name}`);
+  await page.screenshot({ path: path.join(SCREENSHOT_DIR, 'walkthrough-cusped.png') });
+});
+
 test('a bad scene shows its error and the session goes on', async () => {
   const p = await context.newPage();
   const log = [];
