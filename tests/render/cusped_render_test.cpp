@@ -6,12 +6,10 @@
 // bundled-scene sweep.)
 #include <array>
 #include <cmath>
-#include <cstdlib>
 #include <map>
 
 #include "common/shape_kinds.h"
 #include "render/prepare/emitters.h"
-#include "render/prepare/image_io.h"
 #include "render_fixture.h"
 #include "scene/catalogue.h"
 #include "scene/cusp_neighbourhoods.h"
@@ -107,22 +105,8 @@ void expect_quotient_matches_cover(const std::string& name, int crossings) {
   Renderer renderer(device(), quotient);
   renderer.add_samples(1);
   const Image a = renderer.image(), b = render(cover, 1);
-  if (const char* dir = std::getenv("GEODESIC_DEBUG_DIR")) {
-    write_image(std::string(dir) + "/" + name + "-quotient.png", a);
-    write_image(std::string(dir) + "/" + name + "-cover.png", b);
-  }
-  int lit = 0, differing = 0;
-  for (int y = 0; y < a.height; ++y)
-    for (int x = 0; x < a.width; ++x) {
-      double difference = 0, brightness = 0;
-      for (int c = 0; c < 3; ++c) {
-        difference = std::max(difference, double(std::abs(a.at(x, y, c) - b.at(x, y, c))));
-        brightness += a.at(x, y, c);
-      }
-      if (brightness < 0.1) continue;
-      ++lit;
-      differing += difference > 0.02;
-    }
+  const PixelAgreement agreement = compare_pixels(a, b, a);
+  const int lit = agreement.lit, differing = agreement.differing_lit;
   const int pixels = a.width * a.height;
   EXPECT_GT(lit, pixels * 3 / 5) << "most geodesics should end on an object or a horosphere";
   // Only where float round-off moves a silhouette by a fraction of a pixel.

@@ -76,17 +76,8 @@ void expect_quotient_matches_cover(const std::string& name, const std::vector<Ma
       cover.spheres.push_back({model::log_origin(kS3, g * model::exp_origin(kS3, s.center)), s.radius, s.material});
 
   const Image a = render(quotient, 4), b = render(cover, 4);
-  int lit = 0, differing = 0;
-  for (int y = 0; y < a.height; ++y)
-    for (int x = 0; x < a.width; ++x) {
-      double difference = 0, brightness = 0;
-      for (int c = 0; c < 3; ++c) {
-        difference = std::max(difference, double(std::abs(a.at(x, y, c) - b.at(x, y, c))));
-        brightness += b.at(x, y, c);
-      }
-      lit += brightness > 0.1;
-      differing += difference > 0.02;
-    }
+  const PixelAgreement agreement = compare_pixels(a, b, b);
+  const int lit = agreement.lit, differing = agreement.differing;
   const int pixels = a.width * a.height;
   EXPECT_GT(lit, pixels / 10) << "the copies should fill part of the view";
   EXPECT_LT(lit, pixels) << "and leave some background";

@@ -2,6 +2,7 @@
 // and image statistics to assert on.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -68,6 +69,28 @@ inline Rgb mean(const Image& image, int x0, int y0, int x1, int y1) {
 }
 
 inline Rgb mean(const Image& image) { return mean(image, 0, 0, image.width, image.height); }
+
+// Of two renders of one view: the pixels `lit` in `by` (channel sum above 0.1), and the pixels
+// where a and b differ by more than 0.02 in some channel, among all and among the lit ones.
+struct PixelAgreement {
+  int lit = 0, differing = 0, differing_lit = 0;
+};
+inline PixelAgreement compare_pixels(const Image& a, const Image& b, const Image& by) {
+  PixelAgreement agreement;
+  for (int y = 0; y < a.height; ++y)
+    for (int x = 0; x < a.width; ++x) {
+      double difference = 0, brightness = 0;
+      for (int c = 0; c < 3; ++c) {
+        difference = std::max(difference, double(std::abs(a.at(x, y, c) - b.at(x, y, c))));
+        brightness += by.at(x, y, c);
+      }
+      const bool lit = brightness > 0.1, differs = difference > 0.02;
+      agreement.lit += lit;
+      agreement.differing += differs;
+      agreement.differing_lit += lit && differs;
+    }
+  return agreement;
+}
 
 // Root-mean-square difference between two images of the same size.
 inline double rms_difference(const Image& a, const Image& b) {
