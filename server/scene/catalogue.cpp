@@ -223,9 +223,15 @@ std::string number(double x) {
 
 std::string domain_shape(const DirichletDomain& d) {
   const Manifold& m = d.manifold;
-  if (m.pieces.empty())
-    return std::to_string(m.faces.size()) + " faces, " + std::to_string(m.domain.vertices.size()) +
-           " vertices";
+  if (m.pieces.empty()) {
+    std::string s = std::to_string(m.faces.size()) + " faces, " +
+                    std::to_string(m.domain.vertices.size()) + " vertices";
+    if (d.cusps == 0) return s;
+    int ideal = 0;
+    for (const Vec3& v : m.domain.vertices) ideal += ideal_vertex(GeometryKind::Hyperbolic, v);
+    return s + " (" + std::to_string(ideal) + " ideal); " + std::to_string(d.cusps) +
+           (d.cusps == 1 ? " cusp" : " cusps");
+  }
   std::size_t faces = 0;
   for (const DomainPiece& p : m.pieces) faces += p.faces.size();
   return std::to_string(m.pieces.size()) + " pieces, " + std::to_string(faces) + " faces";
