@@ -66,7 +66,8 @@ int quotient_table(std::vector<std::string> scenes, const std::string& device, i
   if (scenes.empty())
     for (const char* name :
          {"mirrored-dodecahedron", "seifert-weber", "poincare-sphere", "torus-cornell",
-          "quarter-turn-space", "catalogue/lens-7-3", "catalogue/coxeter-5-3-4"})
+          "quarter-turn-space", "catalogue/lens-7-3", "catalogue/coxeter-5-3-4",
+          "figure-eight-knot", "whitehead-link"})
       scenes.push_back(dir + name + ".json");
   scenes.insert(scenes.begin(), dir + "cornell-box.json");
   VulkanContext ctx(device);
