@@ -137,5 +137,29 @@ TEST(CuspedQuotient, DefaultScenesEndTheirGeodesicsOnHorospheres) {
   }
 }
 
+// The camera on a face of the figure-eight's domain and on one of its finite vertices (seams
+// the camera's placement carries into the domain), looking up the cusp: finite samples, light,
+// and geodesics that end on a horosphere or an object, not at the crossing cap.
+TEST(CuspedQuotient, CamerasOnAFaceAndAVertex) {
+  Scene scene = load_scene_file(source_path("scenes/catalogue/figure-eight.json"));
+  scene.render.width = scene.render.height = 48;
+  scene.render.max_depth = 3;
+  const Polyhedron& domain = scene.manifold.domain;
+  int finite = 0;
+  while (ideal_vertex(kH3, domain.vertices.at(finite))) ++finite;
+  const Vec3 face = scene.manifold.faces[0].normal * scene.manifold.faces[0].delta;
+  const Vec3 vertex = domain.vertices[finite];
+  for (const Vec3& chart : {face, vertex}) {
+    SCOPED_TRACE(chart.x);
+    const Vec3 exponential = normalize(chart) * std::atanh(length(chart));
+    scene.camera.pose = model::translation(kH3, exponential) * model::rotation({1, 0, 0}, 0.4);
+    Renderer renderer(device(), scene);
+    renderer.add_samples(4);
+    EXPECT_EQ(renderer.non_finite_samples(), 0u);
+    EXPECT_LT(renderer.trace_counters().truncated_rays, 48u * 48 * 4 / 100);
+    EXPECT_GT(luminance_of(mean(renderer.image())), 0.05);
+  }
+}
+
 }  // namespace
 }  // namespace geodesic::test
