@@ -62,7 +62,7 @@ struct Shape {
   float size;
   uint kind;
   uint material;
-  uint pad0;
+  uint emitter;  // index into the emitters, ~0u when it does not emit (or is not sampled)
 };
 
 // One shape's bounding box in one cell's acceleration structure.
@@ -86,12 +86,13 @@ struct TriangleInfo {
 
 // A light source of the physical model (server/render/prepare/emitters.h).
 struct Emitter {
-  vec4 center;    // model point: the light, the sphere's centre or the triangle's centroid
+  vec4 center;    // model point: the light, the sphere's centre or the triangle's centroid;
+                  // a horosphere's light-like l
   vec4 corner;    // triangle: first corner and two edges in the chart around the centroid
   vec4 edge1;
   vec4 edge2;
   vec4 radiance;  // rgb: intensity (point) or emitted radiance; w: model area
-  uint kind;      // EmitterKind: 0 point, 1 sphere, 2 triangle
+  uint kind;      // EmitterKind: 0 point, 1 sphere, 2 triangle, 3 horosphere
   float radius;   // sphere: geodesic radius; triangle: centroid to farthest corner
   float pmf;      // probability of choosing this emitter
   float cdf;      // sum of pmf up to and including this one

@@ -32,6 +32,12 @@ bool occludedTowards(Surface s, LightSample ls) {
     if (surface > 0.0) reach = surface - surfaceOffsetLength(ls.position);
   }
 #endif
+#if defined(HAS_HOROSPHERE_EMITTERS)
+  if (ls.horosphere.w > 0.0) {  // likewise a horosphere's
+    float surface = intersectHorosphere(origin, direction, ls.horosphere, 0.0, FAR);
+    if (surface < FAR) reach = surface - surfaceOffsetLength(ls.position);
+  }
+#endif
   GeodesicRay shadow = GeodesicRay(origin, direction, s.cell, ~0u);
   return reach > 0.0 && occluded(shadow, reach);
 }
@@ -40,7 +46,8 @@ bool occludedTowards(Surface s, LightSample ls) {
 // unless light sampling alone is asked for.
 vec3 nextEventEstimate(Surface s, LocalFrame local, vec3 n, vec3 wo, Material m, bool last,
                        bool lightOnly, PathSampler samples, uint depth) {
-#if defined(HAS_SPHERE_EMITTERS) || defined(HAS_TRIANGLE_EMITTERS)
+#if defined(HAS_SPHERE_EMITTERS) || defined(HAS_TRIANGLE_EMITTERS) || \
+    defined(HAS_HOROSPHERE_EMITTERS)
   vec2 onLight = bounceSample(samples, depth, PAIR_LIGHT_POINT);
 #else
   const vec2 onLight = vec2(0.0);  // point lights have no extent to sample
@@ -82,8 +89,10 @@ vec3 physicalRadiance(GeodesicRay ray, PathSampler samples) {
       if (misWeighted && s.emitter != ~0u) {
         float cosLight = abs(modelInner(s.incoming, s.geometricNormal));
         float density = lightPdf(s.emitter, from, heading, travelled + s.t, cosLight);
-        // Light sampling alone: what it can sample is its own (a copy past the cutoff is not).
-        weight = lightOnly ? (density > 0.0 ? 0.0 : 1.0) : powerHeuristic(bsdfDensity, density);
+        // Light sampling alone, or past the last bounce, where the NEE sample took this segment
+        // with full weight: what it can sample is its own (a copy past the cutoff is not).
+        weight = lightOnly || depth > frame.max_depth ? (density > 0.0 ? 0.0 : 1.0)
+                                                      : powerHeuristic(bsdfDensity, density);
       }
 #endif
       radiance += throughput * m.emission.rgb * weight;
@@ -103,8 +112,11 @@ vec3 physicalRadiance(GeodesicRay ray, PathSampler samples) {
     BsdfSample bs;
     if (!sampleBsdf(m, n, wo, s.frontFace, vec3(lobeRoulette.x, direction2), bs)) break;
     // After the last bounce light sampling alone covers the smooth lobes; delta lobes still
-    // look for an emitter.
+    // look for an emitter, and so do smooth ones where some emission is beyond light sampling
+    // (UNSAMPLED_EMISSION, render/prepare/pipeline_features.h).
+#if !defined(UNSAMPLED_EMISSION)
     if (last && nee && !bs.delta) break;
+#endif
     vec4 side = bs.transmitted ? -s.geometricNormal : s.geometricNormal;
     vec4 direction = fromLocal(local, bs.wi);
     if (modelInner(direction, side) <= 0.0) break;  // below the geometric surface

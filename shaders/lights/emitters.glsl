@@ -5,9 +5,12 @@
 // round (distance 2 pi - d), each weighted by how much light it can bring, up to
 // render.light_cutoff (server/render/prepare/emitters.h). A point light at distance d gives irradiance I cos / A(d); an area light
 // is sampled by solid angle (spheres: the cone they subtend) or by area with the Jacobian
-// A(d) / cos (triangles), A(d) = d^2, sinh^2 d or sin^2 d. Compiled only with LIGHT_SAMPLING,
-// and each kind of emitter only when the scene has one (HAS_POINT_LIGHTS, HAS_SPHERE_EMITTERS,
-// HAS_TRIANGLE_EMITTERS).
+// A(d) / cos (triangles), A(d) = d^2, sinh^2 d or sin^2 d. A horosphere {<x, l> = -1} (H3, a
+// cusp's sky) is a sphere whose centre has gone to its ideal point: from outside its horoball
+// it fills the cone about the tangent towards that point of sin alpha = 1 / -<x, l> (e^-d at
+// distance d), from inside every direction. Compiled only with LIGHT_SAMPLING, and each kind
+// of emitter only when the scene has one (HAS_POINT_LIGHTS, HAS_SPHERE_EMITTERS,
+// HAS_TRIANGLE_EMITTERS, HAS_HOROSPHERE_EMITTERS).
 #ifndef EMITTERS_GLSL
 #define EMITTERS_GLSL
 #if defined(LIGHT_SAMPLING)
@@ -15,6 +18,7 @@
 const uint EMITTER_POINT = 0u;
 const uint EMITTER_SPHERE = 1u;
 const uint EMITTER_TRIANGLE = 2u;
+const uint EMITTER_HOROSPHERE = 3u;
 const float FULL_TURN = 6.28318530717958647692;
 
 // True when every geodesic from a point at distance d from the sphere's centre meets it: the
@@ -34,6 +38,15 @@ float sphereConeCos(Emitter e, float d) {
   return sqrt(max(0.0, 1.0 - sphereAreaFactor(e.radius) / sphereAreaFactor(d)));
 }
 
+#if defined(HAS_HOROSPHERE_EMITTERS)
+// The cosine of the half-angle of the cone the horoball of l subtends from x, sin alpha =
+// 1 / s for s = -<x, l>; -1 (every direction) from inside (s <= 1).
+float horosphereConeCos(vec4 x, vec4 l) {
+  float s = -modelInner(x, l);
+  return s <= 1.0 ? -1.0 : sqrt(max(0.0, 1.0 - 1.0 / (s * s)));
+}
+#endif
+
 // Branch b of the geodesics from a point at distance d: 0 the direct one, 1 the long way
 // round (S3 only).
 #if defined(GEOMETRY_SPHERICAL)
@@ -51,6 +64,12 @@ float branchDistance(float d, uint branch) { return branch == 0u ? d : FULL_TURN
 // from the two points without the distance (areaFactorBetween): this runs for every image of
 // the emitter at every shading point, and sampleLight and lightPdf only need the same weights.
 vec2 imageWeights(Emitter e, vec4 x, vec4 c, vec4 ng) {
+#if defined(HAS_HOROSPHERE_EMITTERS)
+  if (e.kind == EMITTER_HOROSPHERE) {  // 4 pi sin^2 alpha, as a sphere's A(r) / A(d) below
+    float s = -modelInner(x, c);
+    return vec2(s <= 1.0 ? 4.0 * PI : 4.0 * PI / (s * s), 0.0);
+  }
+#endif
 #if defined(HAS_SPHERE_EMITTERS)
   if (e.kind == EMITTER_SPHERE && sphereSurrounds(e, geodesicDistance(x, c)))
     return vec2(4.0 * PI, 0.0);
@@ -98,6 +117,7 @@ struct LightSample {
   float distance;  // to the light point along `direction` (past pi: the long way round, S3)
   vec4 sphereCenter;   // a sphere emitter's image: the shadow geodesic stops at its surface
   float sphereRadius;  // 0 for other emitters
+  vec4 horosphere;     // a horosphere emitter's image l, likewise; 0 for other emitters
   vec3 radiance;   // L_e, or I / A(d) for a point light
   float pdf;       // solid-angle density (point light: the probability of the choice)
   bool point;
@@ -106,7 +126,7 @@ struct LightSample {
 // One light sample seen from x (unit local frame `local` at x, geometric normal ng); false
 // when none applies.
 bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) {
-  ls = LightSample(vec4(0.0), vec4(0.0), 0.0, vec4(0.0), 0.0, vec3(0.0), 0.0, false);
+  ls = LightSample(vec4(0.0), vec4(0.0), 0.0, vec4(0.0), 0.0, vec4(0.0), vec3(0.0), 0.0, false);
   if (EMITTER_COUNT == 0u) return false;
   uint index = chooseEmitter(u.x);
   Emitter e = emitters[index];
@@ -133,6 +153,27 @@ bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) 
   }
   if (image == e.image_count) return false;
   float choice = w / total;
+#if defined(HAS_HOROSPHERE_EMITTERS)
+  if (e.kind == EMITTER_HOROSPHERE) {
+    // Directions towards the horoball: the cone about the tangent towards its ideal point,
+    // l - s x for s = -<x, l>.
+    vec4 l = lightImages[e.image_begin + image].center;
+    float cosMax = horosphereConeCos(x, l);
+    vec3 axis = cosMax > -1.0 ? toLocal(local, normalizeTangent(x, l + modelInner(x, l) * x))
+                              : vec3(0.0, 0.0, 1.0);
+    ls.direction = fromLocal(local, sampleUniformCone(axis, cosMax, u.zw));
+    // Past the offset from x's surface, as BSDF samples leave it: on the horosphere itself the
+    // geodesic's own root at 0 is not a light point.
+    float t = intersectHorosphere(x, ls.direction, l, surfaceOffsetLength(x), FAR);
+    if (!(t < FAR)) return false;
+    ls.distance = t;
+    ls.position = normalizePoint(geodesicPoint(x, ls.direction, t));
+    ls.horosphere = l;
+    ls.radiance = e.radiance.rgb;
+    ls.pdf = e.pmf * choice / (2.0 * PI * (1.0 - cosMax));
+    return true;
+  }
+#endif
   mat4 g = lightImages[e.image_begin + image].isometry;
   vec4 c = lightImages[e.image_begin + image].center;
   float d = geodesicDistance(x, c);
@@ -192,6 +233,16 @@ bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) 
 #endif
 }
 
+// How far y lies from the surface of the emitter's image c (from c itself for a point light or
+// a triangle's centroid): the image a geodesic ending at y met is the one that passes closest.
+float imageMiss(Emitter e, vec4 y, vec4 c) {
+#if defined(HAS_HOROSPHERE_EMITTERS)
+  if (e.kind == EMITTER_HOROSPHERE) return abs(log(max(-modelInner(y, c), 1e-30)));
+#endif
+  float d = geodesicDistance(y, c);
+  return e.kind == EMITTER_SPHERE ? abs(d - e.radius) : d;
+}
+
 // The density with which sampleLight at x would have produced the direction `direction` that
 // reached emitter `index` after arc length t, arriving at cosine cosLight to its surface.
 float lightPdf(uint index, vec4 x, vec4 direction, float t, float cosLight) {
@@ -213,8 +264,7 @@ float lightPdf(uint index, vec4 x, vec4 direction, float t, float cosLight) {
     vec2 weights = imageWeights(e, x, cj, vec4(0.0));
     total += weights.x + weights.y;
 #if defined(CELL_CROSSING)
-    float dj = geodesicDistance(y, cj);
-    float miss = e.kind == EMITTER_SPHERE ? abs(dj - e.radius) : dj;
+    float miss = imageMiss(e, y, cj);
     if (miss >= best) continue;
     best = miss;
     image = j;
@@ -225,7 +275,14 @@ float lightPdf(uint index, vec4 x, vec4 direction, float t, float cosLight) {
 #if defined(CELL_CROSSING)
   // A copy of the emitter beyond the cutoff: light sampling never picks it.
   float slack = 1e-3 * (1.0 + t);
-  if (best > (e.kind == EMITTER_SPHERE ? slack : e.radius + slack)) return 0.0;
+  bool surface = e.kind == EMITTER_SPHERE || e.kind == EMITTER_HOROSPHERE;
+  if (best > (surface ? slack : e.radius + slack)) return 0.0;
+#endif
+#if defined(HAS_HOROSPHERE_EMITTERS)
+  if (e.kind == EMITTER_HOROSPHERE) {
+    float cosMax = horosphereConeCos(x, lightImages[e.image_begin + image].center);
+    return e.pmf * (met.x / total) / (2.0 * PI * (1.0 - cosMax));
+  }
 #endif
   mat4 g = lightImages[e.image_begin + image].isometry;
   float d = geodesicDistance(x, lightImages[e.image_begin + image].center);

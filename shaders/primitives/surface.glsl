@@ -80,7 +80,7 @@ Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
       Shape shape = shapes[hit.index];
       s.geometricNormal = shapeNormal(shape, s.position);
       s.material = shape.material;
-      s.emitter = ~0u;  // its emission is found by BSDF sampling alone
+      s.emitter = shape.emitter;
       s.horizon = !(s.position.w <= SHAPE_HORIZON_W);
     }
 #endif

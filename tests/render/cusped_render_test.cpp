@@ -161,5 +161,53 @@ TEST(CuspedQuotient, CamerasOnAFaceAndAVertex) {
   }
 }
 
+// The cusps' sky as the only light: diffuse spheres under diffuse, glowing horospheres. Light
+// sampling picks among each cusp's horoballs near the cell (one emitter per cusp, however many
+// ideal vertices it has: render/prepare/emitters.h), and MIS and BSDF sampling alone agree, in
+// the whole image within 1.5 % and in each 8x8 block within 4 % (their noise is a third of
+// that). Before the path went on past its last bounce for the horoballs past the cutoff
+// (PipelineFeatures::unsampled_emission), MIS came out 5 % darker.
+TEST(CuspedQuotient, TheSkyIsSampledAsALight) {
+  for (const char* name : {"figure-eight", "whitehead-link"}) {
+    SCOPED_TRACE(name);
+    const DirichletDomain domain = dirichlet_domain(kH3, find_catalogue_entry(name)->generators);
+    Scene scene = glowing_cusped(domain);
+    for (int i = 0; i < 3; ++i) {
+      scene.materials[i].emission = Vec3{};
+      scene.materials[i].diffuse = Vec3{0.7, 0.7, 0.7};
+    }
+    for (int i = 3; i < 5; ++i) scene.materials[i].diffuse = Vec3{0.4, 0.4, 0.4};
+    scene.render.width = scene.render.height = 32;
+    scene.render.max_depth = 2;
+
+    const EmitterTable table = build_emitters(scene);
+    ASSERT_EQ(table.emitters.size(), std::size_t(domain.cusps));
+    for (const GpuEmitter& e : table.emitters) {
+      EXPECT_EQ(e.kind, uint32_t(EmitterKind::Horosphere));
+      EXPECT_GE(e.image_count, 1u);
+    }
+    for (std::size_t i = 0; i < scene.shapes.size(); ++i)
+      EXPECT_EQ(table.shape_emitter[i], scene.shapes[i].material - 3) << "shape " << i;
+
+    Image images[2];
+    for (LightSampling sampling : {LightSampling::Mis, LightSampling::Bsdf}) {
+      scene.render.light_sampling = sampling;
+      Renderer renderer(device(), scene);
+      renderer.add_samples(256);
+      EXPECT_EQ(renderer.non_finite_samples(), 0u);
+      images[sampling == LightSampling::Mis ? 0 : 1] = renderer.image();
+    }
+    const Image &mis = images[0], &bsdf = images[1];
+    const double whole = luminance_of(mean(bsdf));
+    EXPECT_NEAR(luminance_of(mean(mis)), whole, 0.015 * whole);
+    for (int y = 0; y < 32; y += 8)
+      for (int x = 0; x < 32; x += 8) {
+        const double block = luminance_of(mean(bsdf, x, y, x + 8, y + 8));
+        EXPECT_NEAR(luminance_of(mean(mis, x, y, x + 8, y + 8)), block, 0.04 * block)
+            << "block at " << x << ", " << y;
+      }
+  }
+}
+
 }  // namespace
 }  // namespace geodesic::test

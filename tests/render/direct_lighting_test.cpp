@@ -7,6 +7,7 @@
 // - a quad: E = L * integral over the light of cos_x cos_y / A(d) dA, Lambert's polygon formula
 //   in E3 (after clipping to the upper half-space), numerical quadrature in double in H3 and
 //   S3 (the quadrature itself is checked against Lambert in E3).
+// - a horosphere (H3): the cone of sin alpha = e^-d towards its ideal point, as a sphere's.
 // In S3 every light is also seen the long way round, through the antipode: the same cone (or
 // the same points at distance 2 pi - d) in the opposite direction.
 // Each configuration is rendered with MIS, light sampling alone and BSDF sampling alone; all
@@ -119,6 +120,35 @@ TEST(DirectLight, SphereLightsMatchTheirClosedForms) {
       const Vec3 axis{std::cos(e), 0, std::sin(e)};
       expect_radiance(k, sphere_json(axis, c.d, c.r), sphere_irradiance(k, axis, c.d, c.r), c.what);
     }
+  }
+}
+
+// A horosphere of radiance 1 (H3, a cusp's sky) at signed distance d from the patch, its ideal
+// point along `axis`: from outside its horoball it fills the cone of sin alpha = e^-d about
+// that direction (horosphere_test.cpp holds its angular size), from inside every direction.
+TEST(DirectLight, HorosphereLightsMatchTheirClosedForms) {
+  struct Case {
+    const char* what;
+    double elevation_degrees, d;
+  };
+  const Case cases[] = {
+      {"close above the patch (0.05 from it)", 90, 0.05},
+      {"overhead at 1", 90, 1.0},
+      {"far", 60, 1.4},
+      {"partly below the horizon", 15, 0.4},
+      {"grazing: its cone's lower edge 2 degrees above the horizon", 20, -std::log(std::sin(kPi / 10))},
+      {"the patch inside its horoball", 70, -0.5},
+  };
+  for (const Case& c : cases) {
+    const double e = c.elevation_degrees * kPi / 180;
+    const Vec3 axis{std::cos(e), 0, std::sin(e)};
+    const double alpha = std::asin(std::exp(-std::max(c.d, 0.0)));
+    const double irradiance = c.d <= 0                      ? kPi
+                              : axis.z >= std::sin(alpha) ? kPi * std::exp(-2 * c.d) * axis.z
+                                                            : cone_integral(axis, alpha);
+    const std::string light = R"({"type": "horosphere", "material": "lamp", "direction": )" +
+                              vec3_json(axis) + R"(, "distance": )" + std::to_string(c.d) + "}";
+    expect_radiance(GeometryKind::Hyperbolic, light, irradiance, c.what);
   }
 }
 

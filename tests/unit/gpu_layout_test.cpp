@@ -121,7 +121,7 @@ TEST(GpuLayout, EveryHostStructHasItsShaderStructsOffsetsAndStride) {
       {"SphereRef", {AT(GpuSphereRef, sphere), AT(GpuSphereRef, cell)}, sizeof(GpuSphereRef)},
       {"Shape",
        {AT(GpuShape, a), AT(GpuShape, b), AT(GpuShape, size), AT(GpuShape, kind),
-        AT(GpuShape, material), AT(GpuShape, pad0)},
+        AT(GpuShape, material), AT(GpuShape, emitter)},
        sizeof(GpuShape)},
       {"ShapeRef", {AT(GpuShapeRef, shape), AT(GpuShapeRef, cell)}, sizeof(GpuShapeRef)},
       {"PointLight", {AT(GpuPointLight, position), AT(GpuPointLight, intensity)},

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <string>
 
+#include "common/shape_kinds.h"
 #include "geometry/sampling.h"
 #include "scene/group_orbit.h"
 
@@ -43,10 +45,92 @@ bool is_antipodal_map(const Mat4& g) {
   return true;
 }
 
+// An image of an emitter: its distance from the cell's centre, the group element, and the
+// emitter's centre (a horosphere's l) carried by it.
+struct Image {
+  double distance;
+  Mat4 g;
+  Vec4 center;
+};
+
 struct Emitting {
   GpuEmitter gpu{};
   double power = 0;
+  Vec4 horosphere;             // a horosphere's l, in double
+  std::vector<Image> images;  // horospheres: found with the emitter (one cusp, one emitter)
 };
+
+// Nearest first, at most kMaxImagesPerEmitter.
+void keep_nearest(std::vector<Image>& images) {
+  std::stable_sort(images.begin(), images.end(),
+                   [](const Image& a, const Image& b) { return a.distance < b.distance; });
+  images.resize(std::min(images.size(), kMaxImagesPerEmitter));
+}
+
+bool same_horosphere(const Vec4& a, const Vec4& b) {
+  const double scale = std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z), std::abs(a.w)});
+  const Vec4 d = a - b;
+  return std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z), std::abs(d.w)}) <= 1e-7 * scale;
+}
+
+// The distinct horoballs g h l within the cutoff of the cell's centre o, at signed distance
+// log(-<o, g h l>) = log((g h l).w) (negative when o is inside), added to `images`.
+void add_horoball_images(const std::vector<Mat4>& group, const Mat4& h, const Vec4& l,
+                         double cutoff, std::vector<Image>& images) {
+  for (const Mat4& g : group) {
+    const Mat4 gh = g * h;
+    const Vec4 image = gh * l;
+    const double d = std::log(image.w);
+    if (!(d <= cutoff)) continue;
+    if (std::none_of(images.begin(), images.end(),
+                     [&](const Image& i) { return same_horosphere(i.center, image); }))
+      images.push_back({d, gh, image});
+  }
+}
+
+// Emissive horospheres: one emitter per cusp (a horosphere that is an image h l of an earlier
+// one, with its emission, joins its emitter and adds the horoballs its own elements reach),
+// its images the distinct horoballs. Its power, which only sets how often it is chosen, is
+// that of a sphere light at distance 1 from the cell's centre filling the cone its images
+// fill from there: pi L 4 pi sinh^2(1) sum min(1, sin^2 alpha_i), sin alpha = e^-d for a
+// horoball at distance d (the whole sphere from inside).
+void add_horosphere_emitters(const Scene& scene, const std::vector<Mat4>& group, double cutoff,
+                             std::vector<Emitting>& found, std::vector<uint32_t>& shape_emitter) {
+  shape_emitter.assign(scene.shapes.size(), EmitterTable::kNone);
+  const std::size_t first = found.size();
+  for (std::size_t s = 0; s < scene.shapes.size(); ++s) {
+    const Shape& shape = scene.shapes[s];
+    const Vec3 le = scene.materials[shape.material].emission;
+    if (shape.kind != SHAPE_HOROSPHERE || luminance(le) <= 0) continue;
+    const Vec4 l = shape.params.a;
+    std::size_t e = first;
+    std::optional<Mat4> h;  // l = h l_e for the emitter e it joins
+    for (; e < found.size(); ++e) {
+      if (found[e].gpu.radiance != to_float4(le, 0)) continue;
+      for (const Image& i : found[e].images)
+        if (same_horosphere(i.center, l)) h = i.g;
+      if (h) break;
+    }
+    if (e == found.size()) {
+      Emitting emitting;
+      emitting.gpu.kind = uint32_t(EmitterKind::Horosphere);
+      emitting.gpu.center = to_float4(l);
+      emitting.gpu.radiance = to_float4(le, 0);
+      emitting.horosphere = l;
+      found.push_back(emitting);
+      h = Mat4::identity();
+    }
+    add_horoball_images(group, *h, found[e].horosphere, cutoff, found[e].images);
+    shape_emitter[s] = uint32_t(e);
+  }
+  for (std::size_t e = first; e < found.size(); ++e) {
+    keep_nearest(found[e].images);
+    double cones = 0;
+    for (const Image& i : found[e].images) cones += std::min(1.0, std::exp(-2 * i.distance));
+    const Vec3 le{found[e].gpu.radiance[0], found[e].gpu.radiance[1], found[e].gpu.radiance[2]};
+    found[e].power = kPi * luminance(le) * 4 * kPi * std::pow(std::sinh(1.0), 2) * cones;
+  }
+}
 
 GpuEmitter triangle_emitter(GeometryKind k, const Vec4 (&p)[3]) {
   GpuEmitter e{};
@@ -128,6 +212,27 @@ EmitterTable build_emitters(const Scene& scene) {
   table.cutoff = resolve_cutoff(scene, circumradius);
   std::vector<Emitting> found;
 
+  // Images are chosen by their distance from the cell's centre, the same for every shading
+  // point, so that light sampling and its density at BSDF-found hits agree everywhere.
+  std::vector<Mat4> group;
+  for (;;) {
+    try {
+      group = group_elements_within(k, scene.manifold, std::min(table.cutoff, kPi) + circumradius);
+      break;
+    } catch (const SceneError&) {
+      // The default halves until the images fit: a kaleidoscope's tiny cells have thousands
+      // of copies within its circumradius. A cutoff the scene asks for stands or fails.
+      if (scene.render.light_cutoff > 0 || table.cutoff < 1e-3) throw;
+      table.cutoff /= 2;
+    }
+  }
+  // Where the group holds the antipodal map -1 (the Poincare space, lens spaces of even order),
+  // x and -x are copies of one point: every geodesic from a surface point that runs past pi
+  // crosses the copy of its own surface at the antipode. The long way round then brings no
+  // light, and light sampling leaves it out (sampling it only costs variance).
+  if (k == GeometryKind::Spherical && table.cutoff > kPi &&
+      std::any_of(group.begin(), group.end(), is_antipodal_map))
+    table.cutoff = kPi;
   for (const PointLight& light : scene.lights) {
     Emitting e;
     e.gpu.kind = uint32_t(EmitterKind::Point);
@@ -171,50 +276,30 @@ EmitterTable build_emitters(const Scene& scene) {
     }
   }
 
+  add_horosphere_emitters(scene, group, table.cutoff, found, table.shape_emitter);
   double total = 0;
   for (const Emitting& e : found) total += e.power;
-  // Images are chosen by their distance from the cell's centre, the same for every shading
-  // point, so that light sampling and its density at BSDF-found hits agree everywhere.
-  std::vector<Mat4> group;
-  for (;;) {
-    try {
-      group = group_elements_within(k, scene.manifold, std::min(table.cutoff, kPi) + circumradius);
-      break;
-    } catch (const SceneError&) {
-      // The default halves until the images fit: a kaleidoscope's tiny cells have thousands
-      // of copies within its circumradius. A cutoff the scene asks for stands or fails.
-      if (scene.render.light_cutoff > 0 || table.cutoff < 1e-3) throw;
-      table.cutoff /= 2;
-    }
-  }
-  // Where the group holds the antipodal map -1 (the Poincare space, lens spaces of even order),
-  // x and -x are copies of one point: every geodesic from a surface point that runs past pi
-  // crosses the copy of its own surface at the antipode. The long way round then brings no
-  // light, and light sampling leaves it out (sampling it only costs variance).
-  if (k == GeometryKind::Spherical && table.cutoff > kPi &&
-      std::any_of(group.begin(), group.end(), is_antipodal_map))
-    table.cutoff = kPi;
   double cdf = 0;
   for (Emitting& e : found) {
     e.gpu.pmf = float(e.power / total);
     cdf += e.power / total;
     e.gpu.cdf = float(cdf);
-    const Vec4 c{e.gpu.center[0], e.gpu.center[1], e.gpu.center[2], e.gpu.center[3]};
-    std::vector<std::pair<double, const Mat4*>> near;
-    for (const Mat4& g : group) {
-      const double d = model::geodesic_distance(k, model::origin(), g * c);
-      if (d <= table.cutoff) near.push_back({d, &g});
+    if (e.gpu.kind != uint32_t(EmitterKind::Horosphere)) {
+      const Vec4 c{e.gpu.center[0], e.gpu.center[1], e.gpu.center[2], e.gpu.center[3]};
+      for (const Mat4& g : group) {
+        const double d = model::geodesic_distance(k, model::origin(), g * c);
+        if (d <= table.cutoff) e.images.push_back({d, g, g * c});
+      }
+      keep_nearest(e.images);
     }
-    std::stable_sort(near.begin(), near.end(),
-                     [](const auto& a, const auto& b) { return a.first < b.first; });
-    near.resize(std::min(near.size(), kMaxImagesPerEmitter));
+    const bool area = e.gpu.kind != uint32_t(EmitterKind::Point);
+    if (area && !(scene.manifold.faces.empty() ||
+                  (k == GeometryKind::Spherical && table.cutoff >= kPi &&
+                   e.images.size() == group.size())))
+      table.every_image = false;
     e.gpu.image_begin = uint32_t(table.images.size());
-    e.gpu.image_count = uint32_t(near.size());
-    for (const auto& [d, g] : near) {
-      const Vec4 image = *g * c;
-      table.images.push_back(
-          {g->to_glsl(), {float(image.x), float(image.y), float(image.z), float(image.w)}});
-    }
+    e.gpu.image_count = uint32_t(e.images.size());
+    for (const Image& i : e.images) table.images.push_back({i.g.to_glsl(), to_float4(i.center)});
     table.emitters.push_back(e.gpu);
   }
   if (!table.emitters.empty()) table.emitters.back().cdf = 1.0f;

@@ -1,5 +1,6 @@
-// What the `physical` model samples light from: point lights, emissive spheres and emissive
-// triangles, each chosen with probability proportional to its power, and each with its images
+// What the `physical` model samples light from: point lights, emissive spheres, emissive
+// triangles and emissive horospheres (a cusp's sky), each chosen with probability proportional
+// to its power, and each with its images
 // under the manifold's group (the copies of the cell around the domain) that next-event
 // estimation considers. Pure data, built without a device; read by
 // shaders/lights/emitters.glsl.
@@ -14,17 +15,21 @@
 
 namespace geodesic {
 
-enum class EmitterKind : uint32_t { Point = 0, Sphere = 1, Triangle = 2 };
+enum class EmitterKind : uint32_t { Point = 0, Sphere = 1, Triangle = 2, Horosphere = 3 };
 
 // The emitter and its images as the shaders read them (shaders/common/gpu_types.h): an image
 // is the isometry and the emitter's centre carried by it (computed in double), which is all
-// that light sampling reads of every image at every shading point.
+// that light sampling reads of every image at every shading point. A horosphere's "centre" is
+// its light-like vector l ({<x, l> = -1}, scene/shapes/horosphere.cpp).
 using GpuEmitter = gpu::Emitter;
 using GpuLightImage = gpu::LightImage;
 
 // Images kept per emitter: those within the cutoff of the cell's centre (the origin), at
 // most this many, nearest first. In S3 the long way round is also taken when the cutoff
-// exceeds pi.
+// exceeds pi. A horosphere's images are the distinct horoballs g l (the stabiliser of its cusp
+// maps it to itself), and the horospheres of one cusp, which are images of each other (the
+// ideal vertices of one class, scene/cusp_neighbourhoods.h), are one emitter: light sampling
+// must not offer one horoball twice.
 constexpr std::size_t kMaxImagesPerEmitter = 64;
 
 struct EmitterTable {
@@ -32,7 +37,13 @@ struct EmitterTable {
   std::vector<GpuLightImage> images;          // the emitters' images (GpuEmitter ranges)
   std::vector<uint32_t> sphere_emitter;       // per scene sphere: its emitter, or kNone
   std::vector<std::vector<uint32_t>> triangle_emitter;  // per mesh, per triangle
+  std::vector<uint32_t> shape_emitter;        // per scene shape: its emitter, or kNone
   double cutoff = 0;  // light_cutoff as resolved (geodesic distance)
+  // Whether light sampling offers every image of every area light (sphere, triangle,
+  // horosphere): a space without faces, or S3's finite group taken whole. Where it does not,
+  // the images it leaves out are lit only by BSDF samples, also past the last bounce
+  // (PipelineFeatures::unsampled_emission).
+  bool every_image = true;
   static constexpr uint32_t kNone = ~0u;
 };
 

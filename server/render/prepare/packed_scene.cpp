@@ -217,13 +217,17 @@ PackedScene pack_scene(const Scene& scene) {
   out.emitters = emitting.emitters;
   out.light_images = emitting.images;
   out.light_cutoff = emitting.cutoff;
+  out.every_light_image = emitting.every_image;
   for (size_t s = 0; s < scene.spheres.size(); ++s)
     out.spheres.push_back({to_float4(model::exp_origin(k, scene.spheres[s].center)),
                            float(scene.spheres[s].radius), scene.spheres[s].material,
                            emitting.sphere_emitter[s], 0});
-  for (const Shape& shape : scene.shapes)
+  for (size_t i = 0; i < scene.shapes.size(); ++i) {
+    const Shape& shape = scene.shapes[i];
     out.shapes.push_back({to_float4(shape.params.a), to_float4(shape.params.b),
-                          float(shape.params.size), shape.kind, shape.material, 0});
+                          float(shape.params.size), shape.kind, shape.material,
+                          emitting.shape_emitter[i]});
+  }
   for (const PointLight& l : scene.lights)
     out.lights.push_back({to_float4(model::exp_origin(k, l.position)), to_float4(l.intensity)});
 

@@ -50,6 +50,7 @@ struct PackedScene {
   std::vector<GpuEmitter> emitters;         // the physical model's light sources
   std::vector<GpuLightImage> light_images;  // their images (GpuEmitter ranges)
   double light_cutoff = 0;
+  bool every_light_image = true;  // EmitterTable::every_image
   std::vector<GpuCell> cells;
   std::vector<GpuCellFace> faces;
   std::vector<CellGeometry> cell_geometry;  // one per cell

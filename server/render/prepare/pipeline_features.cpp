@@ -98,6 +98,14 @@ PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
                            : f.light_sampling && any_emitter_of_kind(packed, EmitterKind::Point);
   f.sphere_emitters = f.light_sampling && any_emitter_of_kind(packed, EmitterKind::Sphere);
   f.triangle_emitters = f.light_sampling && any_emitter_of_kind(packed, EmitterKind::Triangle);
+  f.horosphere_emitters =
+      f.light_sampling && any_emitter_of_kind(packed, EmitterKind::Horosphere);
+  const bool emissive_tubes =
+      std::any_of(packed.tubes.begin(), packed.tubes.end(), [&](const GpuTube& t) {
+        const Vec3 le = scene.materials[t.material].emission;
+        return std::max({le.x, le.y, le.z}) > 0;
+      });
+  f.unsampled_emission = f.light_sampling && (!packed.every_light_image || emissive_tubes);
   f.transmission = f.physical && std::any_of(scene.materials.begin(), scene.materials.end(),
                                              [](const Material& m) {
                                                return std::max({m.transmission.x, m.transmission.y,
@@ -120,6 +128,8 @@ PipelineFeatures all_features(GeometryKind geometry) {
   f.tubes = f.shapes = true;
   f.paper = f.physical = f.point_lights = f.light_sampling = true;
   f.sphere_emitters = f.triangle_emitters = f.transmission = true;
+  f.horosphere_emitters = geometry == GeometryKind::Hyperbolic;  // horospheres exist in H3 alone
+  f.unsampled_emission = true;
   return f;
 }
 
@@ -153,6 +163,8 @@ std::vector<std::string> PipelineFeatures::defines() const {
   flag(light_sampling, "LIGHT_SAMPLING");
   flag(sphere_emitters, "HAS_SPHERE_EMITTERS");
   flag(triangle_emitters, "HAS_TRIANGLE_EMITTERS");
+  flag(horosphere_emitters, "HAS_HOROSPHERE_EMITTERS");
+  flag(unsampled_emission, "UNSAMPLED_EMISSION");
   flag(transmission, "HAS_TRANSMISSION");
   flag(variant == PipelineVariant::Specialised && primitive_culling && traced_boxes() != triangles,
        "CULL_PRIMITIVES");
@@ -212,6 +224,8 @@ std::string PipelineFeatures::summary() const {
   word(light_sampling, "mis(" + std::to_string(emitter_count) + ")");
   word(sphere_emitters, "sphere-lights");
   word(triangle_emitters, "triangle-lights");
+  word(horosphere_emitters, "horosphere-lights");
+  word(unsampled_emission, "past-last-bounce");
   word(transmission, "refraction");
   word(shared_cell_masks, "shared-cell-masks");
   word(internal_walls, "internal-walls");

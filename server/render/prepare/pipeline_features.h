@@ -51,6 +51,12 @@ struct PipelineFeatures {
   bool point_lights = false;             // point-light code (eq. 2.2 or point emitters)
   bool light_sampling = false;           // next-event estimation and MIS
   bool sphere_emitters = false, triangle_emitters = false;
+  bool horosphere_emitters = false;      // a cusp's emissive horospheres (H3, with shapes)
+  // Emission that light sampling cannot offer: images of area lights past the cutoff, or an
+  // emissive edge tube. With NEE the path then goes on past its last bounce to find it by BSDF
+  // sampling (weight 1 where light sampling could not have produced it, 0 elsewhere), at the
+  // cost of one more geodesic; without it that light would be lost at the last bounce.
+  bool unsampled_emission = false;
   bool transmission = false;             // the dielectric lobe
   // The device can skip a primitive type during traversal (SKIP_AABBS / SKIP_TRIANGLES): set
   // by the caller, used where the scene lacks boxes (spheres, shapes) or triangles.
