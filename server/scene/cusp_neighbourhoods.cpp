@@ -11,18 +11,11 @@ namespace {
 
 constexpr auto kH3 = GeometryKind::Hyperbolic;
 
-// The ideal vertex of `candidates` at the chart point of the null vector x.
-int vertex_at(const Polyhedron& p, const Vec4& x, const std::vector<int>& candidates) {
-  const Vec3 at = x.xyz() / x.w;
-  for (int i : candidates)
-    if (ideal_vertex(kH3, p.vertices[i]) && length(p.vertices[i] - at) < 1e-6) return i;
-  return -1;
-}
-
 }  // namespace
 
 std::vector<CuspHorosphere> cusp_horospheres(const Manifold& m, double margin, double clearance) {
   const std::vector<std::vector<int>> classes = cusps(kH3, m);
+  const std::vector<IdealVertexPairing> pairings = ideal_vertex_pairings(kH3, m);
   const Polyhedron& p = m.domain;
   std::vector<Vec4> l(p.vertices.size());
   std::vector<int> cusp_of(p.vertices.size(), -1);
@@ -35,11 +28,10 @@ std::vector<CuspHorosphere> cusp_horospheres(const Manifold& m, double margin, d
     while (!queue.empty()) {
       const int i = queue.back();
       queue.pop_back();
-      for (std::size_t f = 0; f < m.faces.size(); ++f) {
-        if (std::find(p.faces[f].begin(), p.faces[f].end(), i) == p.faces[f].end()) continue;
-        const Vec4 image = m.faces[f].pairing * l[i];
-        const int j = vertex_at(p, image, p.faces[m.faces[f].partner]);
-        if (j < 0) continue;
+      for (const IdealVertexPairing& pairing : pairings) {
+        if (pairing.from != i) continue;
+        const Vec4 image = m.faces[pairing.face].pairing * l[i];
+        const int j = pairing.to;
         if (cusp_of[j] < 0) {
           cusp_of[j] = static_cast<int>(k);
           l[j] = image;

@@ -174,7 +174,10 @@ Attempt attempt(GeometryKind kind, const std::vector<Mat4>& generators, const Ve
   double radius = kind == GeometryKind::Spherical ? 2 * std::numbers::pi : step;
   std::optional<GroupOrbit> orbit;
   Cell cell;
+  std::optional<Manifold> cusped;  // this cell's manifold, built to check a cusped cell closed
+  double cusped_error = 0;
   for (int growth = 0;; ++growth) {
+    cusped.reset();
     // Words whose prefixes stray beyond the ball: half the circumradius of detour is allowed
     // (a wider margin costs e^(2 margin) elements in H3); validation catches a short count.
     const double slack = std::isfinite(cell.circumradius) ? cell.circumradius / 2 : step;
@@ -195,8 +198,8 @@ Attempt attempt(GeometryKind kind, const std::vector<Mat4>& generators, const Ve
     bool closed = orbit->complete() || (cell.polyhedron.bounded && needed <= radius);
     if (closed && cell.ideal_vertices > 0) {  // cusps: closed once the pairings make the group
       try {
-        double error = 0;
-        const Manifold m = manifold_of(kind, *orbit, cell, options.tolerance, error);
+        const Manifold& m = cusped.emplace(
+            manifold_of(kind, *orbit, cell, options.tolerance, cusped_error));
         closed = std::all_of(moved.begin(), moved.end(),
                              [&](const Mat4& g) { return generated_by_pairings(kind, m, g); });
       } catch (const SceneError&) {
@@ -228,7 +231,12 @@ Attempt attempt(GeometryKind kind, const std::vector<Mat4>& generators, const Ve
               (kind != GeometryKind::Spherical ||
                cell.circumradius <= kMaxSphericalCircumradius);
   if (!a.bounded) return a;
-  a.domain.manifold = manifold_of(kind, *orbit, cell, options.tolerance, a.domain.isometry_error);
+  if (cusped) {
+    a.domain.manifold = std::move(*cusped);
+    a.domain.isometry_error = cusped_error;
+  } else {
+    a.domain.manifold = manifold_of(kind, *orbit, cell, options.tolerance, a.domain.isometry_error);
+  }
   a.domain.circumradius = cell.circumradius;
   a.domain.inradius = INFINITY;
   for (const Cut& c : cell.cuts)

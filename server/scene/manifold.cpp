@@ -314,25 +314,33 @@ Manifold make_seifert_weber_space() {
   return twisted_dodecahedron("seifert-weber", GeometryKind::Hyperbolic, 2 * kPi / 5, 3 * kPi / 5);
 }
 
-std::vector<std::vector<int>> cusps(GeometryKind kind, const Manifold& m, double tolerance) {
+std::vector<IdealVertexPairing> ideal_vertex_pairings(GeometryKind kind, const Manifold& m,
+                                                      double tolerance) {
   const LiftedVertices lifted(kind, m.domain);
+  std::vector<IdealVertexPairing> found;
+  for (std::size_t f = 0; f < m.faces.size(); ++f)
+    for (int i : m.domain.faces[f]) {
+      if (!lifted.ideal[i]) continue;
+      const auto [j, off] =
+          lifted.nearest(m.faces[f].pairing, i, m.domain.faces[m.faces[f].partner]);
+      if (j >= 0 && off <= tolerance * 100) found.push_back({static_cast<int>(f), i, j});
+    }
+  return found;
+}
+
+std::vector<std::vector<int>> cusps(GeometryKind kind, const Manifold& m, double tolerance) {
   std::vector<int> parent(m.domain.vertices.size());
   for (std::size_t i = 0; i < parent.size(); ++i) parent[i] = static_cast<int>(i);
   auto root = [&](int i) {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
   };
-  for (std::size_t f = 0; f < m.faces.size(); ++f)
-    for (int i : m.domain.faces[f]) {
-      if (!lifted.ideal[i]) continue;
-      const auto [j, off] =
-          lifted.nearest(m.faces[f].pairing, i, m.domain.faces[m.faces[f].partner]);
-      if (j >= 0 && off <= tolerance * 100) parent[root(i)] = root(j);
-    }
+  for (const IdealVertexPairing& p : ideal_vertex_pairings(kind, m, tolerance))
+    parent[root(p.from)] = root(p.to);
   std::vector<std::vector<int>> classes;
   std::vector<int> index(parent.size(), -1);
   for (std::size_t i = 0; i < parent.size(); ++i) {
-    if (!lifted.ideal[i]) continue;
+    if (!ideal_vertex(kind, m.domain.vertices[i])) continue;
     int& k = index[root(static_cast<int>(i))];
     if (k < 0) {
       k = static_cast<int>(classes.size());

@@ -81,6 +81,17 @@ struct EdgeCycle {
 // Throws SceneError when a pairing does not map an edge onto an edge.
 std::vector<EdgeCycle> edge_cycles(GeometryKind kind, const Manifold& m, double tolerance = 1e-9);
 
+// Face f's pairing carries the domain's ideal vertex `from` (on face f) to `to` (on its
+// partner face).
+struct IdealVertexPairing {
+  int face = 0, from = 0, to = 0;
+};
+
+// Every ideal vertex of every face with its image under the face's pairing (images compared
+// in the chart within 100 x tolerance). Empty for a compact domain.
+std::vector<IdealVertexPairing> ideal_vertex_pairings(GeometryKind kind, const Manifold& m,
+                                                      double tolerance = 1e-9);
+
 // The cusps of an H3 domain with ideal vertices (polyhedron.h): the classes of ideal vertices
 // under the face pairings, each a list of vertex indices. Empty for a compact domain.
 std::vector<std::vector<int>> cusps(GeometryKind kind, const Manifold& m, double tolerance = 1e-9);
