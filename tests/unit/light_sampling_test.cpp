@@ -11,6 +11,8 @@
 #include "geometry/sampling.h"
 #include "twins/bsdf.h"
 #include "render/prepare/emitters.h"
+#include "scene/shape.h"
+#include "common/shape_kinds.h"
 
 namespace geodesic {
 namespace {
@@ -158,6 +160,41 @@ TEST(LightSampling, SphereConeGrazesTheSphere) {
                           std::sin(0.99 * std::asin(sin_alpha)) * side, 0};
     EXPECT_GT(model::sphere_roots(k, x, inside, c, r).disc, 0) << geometry_name(k);
   }
+}
+
+// The cone a horoball subtends, sin(alpha) = 1 / -<x, l>, about the tangent towards its ideal
+// point: geodesics from x just inside it meet the horosphere (the shape's double twin), just
+// outside they miss it, from points near and far and at the horosphere's own distance e^-d; from
+// inside the horoball every direction meets it.
+TEST(LightSampling, HorosphereConeGrazesTheHorosphere) {
+  constexpr auto k = GeometryKind::Hyperbolic;
+  const ShapeKind& horosphere = shape_kind(SHAPE_HOROSPHERE);
+  for (const Vec3& at : {Vec3{0, 0, 0}, Vec3{0.2, -0.4, 0.3}, Vec3{-1.5, 0.8, -2.0}})
+    for (double d : {0.05, 0.7, 3.0}) {
+      ShapeParams s;
+      s.a = std::exp(d) * Vec4(normalize(Vec3{0.3, 0.9, -0.2}), 1);
+      const Vec4 x = model::exp_origin(k, at);
+      const double cos_alpha = horosphere_cone_cos(x, s.a);
+      if (at.x == 0) EXPECT_NEAR(cos_alpha, std::sqrt(1 - std::exp(-2 * d)), 1e-12);
+      ASSERT_GT(cos_alpha, -1) << "x is outside the horoball";
+      const Vec4 axis = model::normalize_tangent(k, x, s.a + model::inner(k, x, s.a) * x);
+      // A unit tangent at x orthogonal to the axis.
+      Vec4 side = model::normalize_tangent(k, x, Vec4{1, 0, 0, 0} + model::inner(k, x, Vec4{1, 0, 0, 0}) * x);
+      side = model::normalize_tangent(k, x, side - model::inner(k, side, axis) * axis);
+      const double alpha = std::acos(cos_alpha);
+      for (double f : {0.999, 1.001}) {
+        const Vec4 v = std::cos(f * alpha) * axis + std::sin(f * alpha) * side;
+        const double t = horosphere.intersect(k, s, x, v, 0, INFINITY);
+        EXPECT_EQ(std::isfinite(t), f < 1) << "x " << at.x << ", d " << d << ", f " << f;
+      }
+    }
+  ShapeParams inside;
+  inside.a = std::exp(-0.4) * Vec4(0, 0, 1, 1);
+  const Vec4 x = model::origin();
+  EXPECT_EQ(horosphere_cone_cos(x, inside.a), -1);
+  // (All but the one geodesic that runs into the ideal point and never leaves.)
+  for (const Vec3& w : {normalize(Vec3{0.01, 0, 1}), Vec3{0, 0, -1}, Vec3{1, 0, 0}, Vec3{0.6, -0.8, 0}})
+    EXPECT_TRUE(std::isfinite(horosphere.intersect(k, inside, x, Vec4(w, 0), 0, INFINITY))) << w.x;
 }
 
 // The area Jacobian integrates to the triangle's area (angle defect in H3, excess in S3).

@@ -161,6 +161,11 @@ double triangle_area_jacobian(GeometryKind k, const Vec3& x, const Vec3& e1, con
   return std::sqrt(std::max(gaa * gbb - gab * gab, 0.0));
 }
 
+double horosphere_cone_cos(const Vec4& x, const Vec4& l) {
+  const double s = -model::inner(GeometryKind::Hyperbolic, x, l);
+  return s <= 1 ? -1 : std::sqrt(std::max(0.0, 1 - 1 / (s * s)));
+}
+
 double triangle_area(GeometryKind k, const Vec4& a, const Vec4& b, const Vec4& c) {
   if (k == GeometryKind::Euclidean) return 0.5 * length(cross(b.xyz() - a.xyz(), c.xyz() - a.xyz()));
   const Vec4 corners[3] = {a, b, c};

@@ -56,6 +56,12 @@ EmitterTable build_emitters(const Scene& scene);
 // K |x|^2), on the edges e1 and e2. Twin of triangleAreaJacobian (shaders/lights/emitters.glsl).
 double triangle_area_jacobian(GeometryKind k, const Vec3& x, const Vec3& e1, const Vec3& e2);
 
+// The cosine of the half-angle of the cone the horoball {<x, l> > -1} (H3) subtends from x,
+// sin alpha = 1 / -<x, l>, about the unit tangent towards its ideal point, l + <x, l> x
+// normalised; -1 (every direction) from inside. Twin of horosphereConeCos
+// (shaders/lights/emitters.glsl).
+double horosphere_cone_cos(const Vec4& x, const Vec4& l);
+
 // The model area of the geodesic triangle abc (angle excess or defect in H3 and S3).
 double triangle_area(GeometryKind k, const Vec4& a, const Vec4& b, const Vec4& c);
 
