@@ -86,6 +86,10 @@ GeodesicRay crossFace(GeodesicRay ray, uint face, float t) {
 }
 #endif
 
+#if defined(GEOMETRY_SPHERICAL) && defined(CELL_CROSSING)
+const float GEODESIC_PERIOD = 6.28318530717958647692 * (1.0 + 1e-4);
+#endif
+
 // Follows the geodesic until it hits something within arc length maxDistance. On a hit, `ray`
 // is the segment that hit (its cell and start) and `travelled` the arc length before it.
 bool followGeodesic(inout GeodesicRay ray, float maxDistance, bool anyHit, out ChartHit hit,
@@ -99,6 +103,13 @@ bool followGeodesic(inout GeodesicRay ray, float maxDistance, bool anyHit, out C
 #else
 #if defined(INTERNAL_WALLS)
   uint walls = 0u;  // crossed between pieces of the domain: bounded apart from MAX_CROSSINGS
+#endif
+#if defined(GEOMETRY_SPHERICAL)
+  // Every geodesic of S3 closes after one turn, 2 pi, and so does its image in a quotient: a
+  // hit at t + 2 pi is one at t, so what it has not met in one turn it never meets. It then
+  // ends as a miss instead of running on to the crossing cap (a little past 2 pi, for the
+  // float sum of its segments, to keep the back of the surface it left).
+  maxDistance = min(maxDistance, GEODESIC_PERIOD);
 #endif
   for (uint crossing = 0u; crossing <= MAX_CROSSINGS;) {
     ChartLine line = chartLineOf(ray);
