@@ -178,6 +178,36 @@ TEST(PipelineFeatures, SmallCellsOfSpheresAreTestedOneByOne) {
   EXPECT_FALSE(listed(torus(kSphereListLength + 1)));
 }
 
+// Paths go on past their last bounce (UNSAMPLED_EMISSION) only where light sampling leaves
+// some emission out: area lights in a quotient of E3 or H3, whose images past the cutoff it
+// does not offer (torus-lamps; the cusps' skies). Not in a space without faces, nor in S3's
+// finite quotients, where every image is offered, nor with point lights alone, which BSDF
+// sampling never finds. Horospheres that glow are light sources.
+TEST(PipelineFeatures, PathsGoPastTheLastBounceOnlyForEmissionLightSamplingLeavesOut) {
+  const auto past = [](const Scene& scene) {
+    const PipelineFeatures f = scene_features(scene, pack_scene(scene));
+    const auto defines = f.defines();
+    EXPECT_EQ(std::find(defines.begin(), defines.end(), "UNSAMPLED_EMISSION") != defines.end(),
+              f.unsampled_emission);
+    return f.unsampled_emission;
+  };
+  for (const char* name : {"torus-lamps", "figure-eight-knot", "whitehead-link"})
+    EXPECT_TRUE(past(bundled(name))) << name;
+  for (const char* name : {"cornell-box", "hyperbolic-lamps", "spherical-lamps", "horospheres",
+                           "furnace", "mirrored-dodecahedron", "poincare-sphere"})
+    EXPECT_FALSE(past(bundled(name))) << name;
+  const Scene lens = scene_from_json(R"({"geometry": "spherical",
+    "manifold": {"type": "lens", "p": 5, "q": 2},
+    "camera": {"position": [0, 0, 0.3], "look_at": [0, 0, 0]},
+    "materials": {"m": {"diffuse": 0.5}, "L": {"emission": 1}},
+    "objects": [{"type": "sphere", "material": "m", "center": [0.1, 0, 0], "radius": 0.05},
+                {"type": "sphere", "material": "L", "center": [0, 0.1, 0], "radius": 0.03}]})");
+  EXPECT_FALSE(past(lens));
+  const Scene horospheres = bundled("horospheres");
+  const PipelineFeatures f = scene_features(horospheres, pack_scene(horospheres));
+  EXPECT_TRUE(f.horosphere_emitters);
+}
+
 TEST(PipelineFeatures, BuffersOnlyForWhatTheSceneHas) {
   const Scene furnace = bundled("furnace");  // triangles, emitters, no spheres, no faces
   const PipelineFeatures f = scene_features(furnace, pack_scene(furnace));

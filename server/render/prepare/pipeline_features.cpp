@@ -100,12 +100,13 @@ PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
   f.triangle_emitters = f.light_sampling && any_emitter_of_kind(packed, EmitterKind::Triangle);
   f.horosphere_emitters =
       f.light_sampling && any_emitter_of_kind(packed, EmitterKind::Horosphere);
-  const bool emissive_tubes =
-      std::any_of(packed.tubes.begin(), packed.tubes.end(), [&](const GpuTube& t) {
-        const Vec3 le = scene.materials[t.material].emission;
-        return std::max({le.x, le.y, le.z}) > 0;
+  // A shape that emits but is no light source (a kind light sampling has no code for).
+  const bool unsampled_shapes =
+      std::any_of(packed.shapes.begin(), packed.shapes.end(), [&](const GpuShape& shape) {
+        const Vec3 le = scene.materials[shape.material].emission;
+        return shape.emitter == EmitterTable::kNone && std::max({le.x, le.y, le.z}) > 0;
       });
-  f.unsampled_emission = f.light_sampling && (!packed.every_light_image || emissive_tubes);
+  f.unsampled_emission = f.light_sampling && (!packed.every_light_image || unsampled_shapes);
   f.transmission = f.physical && std::any_of(scene.materials.begin(), scene.materials.end(),
                                              [](const Material& m) {
                                                return std::max({m.transmission.x, m.transmission.y,

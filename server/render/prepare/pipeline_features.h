@@ -53,7 +53,7 @@ struct PipelineFeatures {
   bool sphere_emitters = false, triangle_emitters = false;
   bool horosphere_emitters = false;      // a cusp's emissive horospheres (H3, with shapes)
   // Emission that light sampling cannot offer: images of area lights past the cutoff, or an
-  // emissive edge tube. With NEE the path then goes on past its last bounce to find it by BSDF
+  // emissive shape of a kind that is no light source. With NEE the path then goes on past its last bounce to find it by BSDF
   // sampling (weight 1 where light sampling could not have produced it, 0 elsewhere), at the
   // cost of one more geodesic; without it that light would be lost at the last bounce.
   bool unsampled_emission = false;
