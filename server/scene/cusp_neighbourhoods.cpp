@@ -11,7 +11,50 @@ namespace {
 
 constexpr auto kH3 = GeometryKind::Hyperbolic;
 
+struct Point2 {
+  double x, y;
+};
+
+// The part of `polygon` where a + b x + c y <= 0 (Sutherland-Hodgman, one edge).
+std::vector<Point2> clip(const std::vector<Point2>& polygon, double a, double b, double c) {
+  std::vector<Point2> out;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Point2 p = polygon[i], q = polygon[(i + 1) % polygon.size()];
+    const double fp = a + b * p.x + c * p.y, fq = a + b * q.x + c * q.y;
+    if (fp <= 0) out.push_back(p);
+    if ((fp < 0) != (fq < 0) && fp != fq) {
+      const double s = fp / (fp - fq);
+      out.push_back({p.x + s * (q.x - p.x), p.y + s * (q.y - p.y)});
+    }
+  }
+  return out;
+}
+
 }  // namespace
+
+double horosphere_area_in_domain(const Manifold& m, const Vec4& l) {
+  const double d = std::log(l.w);
+  const Vec3 n = l.xyz() / l.w;
+  const Vec4 x0(std::sinh(d) * n, std::cosh(d));
+  const Vec3 p1 = normalize(std::abs(n.x) < 0.9 ? cross(n, Vec3{1, 0, 0}) : cross(n, Vec3{0, 1, 0}));
+  const Vec3 p2 = cross(n, p1);
+  constexpr double kBound = 1e4;  // a polygon reaching it is unbounded
+  std::vector<Point2> polygon{{-kBound, -kBound}, {kBound, -kBound}, {kBound, kBound}, {-kBound, kBound}};
+  for (const DomainFace& f : m.faces) {
+    // The face's half-space dot(normal, x) - delta w <= 0, linear in x; through the ideal
+    // point it vanishes on l, and x0 + u + |u|^2 / 2 l gives a line in u.
+    if (std::abs(dot(f.normal, n) - f.delta) > 1e-6) continue;
+    polygon = clip(polygon, dot(f.normal, x0.xyz()) - f.delta * x0.w, dot(f.normal, p1),
+                   dot(f.normal, p2));
+  }
+  double area = 0;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Point2 p = polygon[i], q = polygon[(i + 1) % polygon.size()];
+    if (std::max({std::abs(p.x), std::abs(p.y)}) >= kBound / 2) return INFINITY;
+    area += p.x * q.y - q.x * p.y;
+  }
+  return polygon.size() < 3 ? INFINITY : std::abs(area) / 2;
+}
 
 std::vector<CuspHorosphere> cusp_horospheres(const Manifold& m, double margin, double clearance) {
   const std::vector<std::vector<int>> classes = cusps(kH3, m);

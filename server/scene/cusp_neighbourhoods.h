@@ -26,6 +26,14 @@ struct CuspHorosphere {
   double distance = 0; // signed distance from the origin (the horosphere's "distance")
 };
 
+// The area of the horosphere {<x, l> = -1} within the domain, where the faces through its
+// ideal point alone cut it (the cross-section of an embedded cusp neighbourhood: the ideal
+// vertex's share of the cusp torus). The horosphere is flat: x0 + u + |u|^2 / 2 l, x0 its
+// point nearest the origin and u tangent to it, and each face through the ideal point is a
+// line in u. Infinity where those faces do not bound it (no faces; a horosphere at no ideal
+// vertex, whose images are dense).
+double horosphere_area_in_domain(const Manifold& m, const Vec4& l);
+
 // Throws SceneError when a cusp is incomplete (going round it scales its horospheres: the
 // pairings' cusp holonomy is not Euclidean). Empty for a compact domain.
 std::vector<CuspHorosphere> cusp_horospheres(const Manifold& m, double margin = 0.25,

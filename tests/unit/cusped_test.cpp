@@ -156,6 +156,38 @@ TEST(CuspedDomains, VolumesCuspsAndExactPairings) {
   }
 }
 
+// The area of a cusp's horosphere within the domain, summed over the cusp's ideal vertices: the
+// cusp torus' (Klein bottle's) cross-section. Grown until two horoballs touch (no margin, no
+// clearance) it is the maximal cusp, whose area is known: 2 sqrt 3 for the figure-eight knot
+// complement and its sister (cusp volume sqrt 3, area twice the volume), sqrt 3 for the
+// Gieseking manifold, which the figure-eight double covers. Moving a horosphere s deeper
+// scales its area by e^-2s (the horosphere is flat, and distances along it shrink by e^-s);
+// without faces through its ideal point it has no bounded share of the domain.
+TEST(CuspedDomains, MaximalCuspAreas) {
+  const struct {
+    const char* name;
+    double area;
+  } kCases[] = {{"figure-eight", 2 * std::sqrt(3.0)},
+                {"figure-eight-sister", 2 * std::sqrt(3.0)},
+                {"gieseking", std::sqrt(3.0)}};
+  for (const auto& c : kCases) {
+    SCOPED_TRACE(c.name);
+    const CatalogueEntry& e = *find_catalogue_entry(c.name);
+    const DirichletDomain d = dirichlet_domain(e.kind, e.generators);
+    double area = 0, deeper = 0;
+    for (const CuspHorosphere& h : cusp_horospheres(d.manifold, 0, -INFINITY)) {
+      area += horosphere_area_in_domain(d.manifold, std::exp(h.distance) * Vec4(h.direction, 1));
+      deeper += horosphere_area_in_domain(d.manifold,
+                                          std::exp(h.distance + 0.7) * Vec4(h.direction, 1));
+    }
+    EXPECT_NEAR(area, c.area, 1e-9);
+    EXPECT_NEAR(deeper, c.area * std::exp(-1.4), 1e-9);
+  }
+  const DirichletDomain d =
+      dirichlet_domain(kH3, find_catalogue_entry("figure-eight")->generators);
+  EXPECT_EQ(horosphere_area_in_domain(d.manifold, std::exp(1.0) * Vec4(0.6, 0, 0.8, 1)), INFINITY);
+}
+
 // The catalogue's generators satisfy their groups' presentations (a word left to right is the
 // product of its letters' matrices; capitals are inverses), to round-off.
 TEST(CuspedDomains, GeneratorsSatisfyTheirRelators) {

@@ -8,6 +8,7 @@
 
 #include "common/shape_kinds.h"
 #include "geometry/sampling.h"
+#include "scene/cusp_neighbourhoods.h"
 #include "scene/group_orbit.h"
 
 namespace geodesic {
@@ -57,6 +58,7 @@ struct Emitting {
   GpuEmitter gpu{};
   double power = 0;
   Vec4 horosphere;             // a horosphere's l, in double
+  double area = 0;             // a horosphere's: the sum of its shapes' areas in the domain
   std::vector<Image> images;  // horospheres: found with the emitter (one cusp, one emitter)
 };
 
@@ -90,10 +92,13 @@ void add_horoball_images(const std::vector<Mat4>& group, const Mat4& h, const Ve
 
 // Emissive horospheres: one emitter per cusp (a horosphere that is an image h l of an earlier
 // one, with its emission, joins its emitter and adds the horoballs its own elements reach),
-// its images the distinct horoballs. Its power, which only sets how often it is chosen, is
-// that of a sphere light at distance 1 from the cell's centre filling the cone its images
-// fill from there: pi L 4 pi sinh^2(1) sum min(1, sin^2 alpha_i), sin alpha = e^-d for a
-// horoball at distance d (the whole sphere from inside).
+// its images the distinct horoballs. Its power, which sets how often it is chosen, is pi L
+// times its area in the manifold, as a sphere light's: the cusp's cross-section, the sum of
+// its horospheres' areas in the domain (scene/cusp_neighbourhoods.h). A horosphere with no
+// finite area there (no faces; not at an ideal vertex) stands in as the sphere light at
+// distance 1 from the cell's centre filling the cones its images fill from there:
+// pi L 4 pi sinh^2(1) sum min(1, sin^2 alpha_i), sin alpha = e^-d for a horoball at distance
+// d (the whole sphere from inside).
 void add_horosphere_emitters(const Scene& scene, const std::vector<Mat4>& group, double cutoff,
                              std::vector<Emitting>& found, std::vector<uint32_t>& shape_emitter) {
   shape_emitter.assign(scene.shapes.size(), EmitterTable::kNone);
@@ -121,6 +126,7 @@ void add_horosphere_emitters(const Scene& scene, const std::vector<Mat4>& group,
       h = Mat4::identity();
     }
     add_horoball_images(group, *h, found[e].horosphere, cutoff, found[e].images);
+    found[e].area += horosphere_area_in_domain(scene.manifold, l);
     shape_emitter[s] = uint32_t(e);
   }
   for (std::size_t e = first; e < found.size(); ++e) {
@@ -128,7 +134,9 @@ void add_horosphere_emitters(const Scene& scene, const std::vector<Mat4>& group,
     double cones = 0;
     for (const Image& i : found[e].images) cones += std::min(1.0, std::exp(-2 * i.distance));
     const Vec3 le{found[e].gpu.radiance[0], found[e].gpu.radiance[1], found[e].gpu.radiance[2]};
-    found[e].power = kPi * luminance(le) * 4 * kPi * std::pow(std::sinh(1.0), 2) * cones;
+    found[e].power = kPi * luminance(le) *
+                     (std::isfinite(found[e].area) ? found[e].area
+                                                   : 4 * kPi * std::pow(std::sinh(1.0), 2) * cones);
   }
 }
 
