@@ -108,12 +108,18 @@ void add_horosphere_emitters(const Scene& scene, const std::vector<Mat4>& group,
     const Vec3 le = scene.materials[shape.material].emission;
     if (shape.kind != SHAPE_HOROSPHERE || luminance(le) <= 0) continue;
     const Vec4 l = shape.params.a;
+    // Its horoballs near the cell; an emitter with one of them among its own holds the same
+    // orbit (a cusp's), whether or not l itself lies within the cutoff: it joins that one.
+    std::vector<Image> own;
+    add_horoball_images(group, Mat4::identity(), l, cutoff, own);
     std::size_t e = first;
     std::optional<Mat4> h;  // l = h l_e for the emitter e it joins
     for (; e < found.size(); ++e) {
       if (found[e].gpu.radiance != to_float4(le, 0)) continue;
-      for (const Image& i : found[e].images)
-        if (same_horosphere(i.center, l)) h = i.g;
+      for (const Image& theirs : found[e].images)
+        for (const Image& mine : own)  // g_t l_e = g_m l
+          if (!h && same_horosphere(theirs.center, mine.center))
+            h = model::inverse_isometry(GeometryKind::Hyperbolic, mine.g) * theirs.g;
       if (h) break;
     }
     if (e == found.size()) {
