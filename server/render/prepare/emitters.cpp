@@ -57,7 +57,6 @@ struct Image {
 struct Emitting {
   GpuEmitter gpu{};
   double power = 0;
-  Vec4 horosphere;             // a horosphere's l, in double
   double area = 0;             // a horosphere's: the sum of its shapes' areas in the domain
   std::vector<Image> images;  // horospheres: found with the emitter (one cusp, one emitter)
 };
@@ -75,23 +74,28 @@ bool same_horosphere(const Vec4& a, const Vec4& b) {
   return std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z), std::abs(d.w)}) <= 1e-7 * scale;
 }
 
-// The distinct horoballs g h l within the cutoff of the cell's centre o, at signed distance
-// log(-<o, g h l>) = log((g h l).w) (negative when o is inside), added to `images`.
-void add_horoball_images(const std::vector<Mat4>& group, const Mat4& h, const Vec4& l,
-                         double cutoff, std::vector<Image>& images) {
-  for (const Mat4& g : group) {
-    const Mat4 gh = g * h;
-    const Vec4 image = gh * l;
-    const double d = std::log(image.w);
-    if (!(d <= cutoff)) continue;
-    if (std::none_of(images.begin(), images.end(),
-                     [&](const Image& i) { return same_horosphere(i.center, image); }))
-      images.push_back({d, gh, image});
-  }
+// `image` added to `images` unless its horoball is there already.
+void add_distinct(std::vector<Image>& images, const Image& image) {
+  if (std::none_of(images.begin(), images.end(),
+                   [&](const Image& i) { return same_horosphere(i.center, image.center); }))
+    images.push_back(image);
 }
 
-// Emissive horospheres: one emitter per cusp (a horosphere that is an image h l of an earlier
-// one, with its emission, joins its emitter and adds the horoballs its own elements reach),
+// The distinct horoballs g l within the cutoff of the cell's centre o, at signed distance
+// log(-<o, g l>) = log((g l).w) (negative when o is inside).
+std::vector<Image> horoball_images(const std::vector<Mat4>& group, const Vec4& l, double cutoff) {
+  std::vector<Image> images;
+  for (const Mat4& g : group) {
+    const Vec4 image = g * l;
+    const double d = std::log(image.w);
+    if (d <= cutoff) add_distinct(images, {d, g, image});
+  }
+  return images;
+}
+
+// Emissive horospheres: one emitter per cusp (a horosphere that is an image h l_e of an
+// earlier one, with its emission, joins its emitter and adds the horoballs its own elements
+// reach, g l = g h l_e),
 // its images the distinct horoballs. Its power, which sets how often it is chosen, is pi L
 // times its area in the manifold, as a sphere light's: the cusp's cross-section, the sum of
 // its horospheres' areas in the domain (scene/cusp_neighbourhoods.h). A horosphere with no
@@ -110,8 +114,7 @@ void add_horosphere_emitters(const Scene& scene, const std::vector<Mat4>& group,
     const Vec4 l = shape.params.a;
     // Its horoballs near the cell; an emitter with one of them among its own holds the same
     // orbit (a cusp's), whether or not l itself lies within the cutoff: it joins that one.
-    std::vector<Image> own;
-    add_horoball_images(group, Mat4::identity(), l, cutoff, own);
+    const std::vector<Image> own = horoball_images(group, l, cutoff);
     std::size_t e = first;
     std::optional<Mat4> h;  // l = h l_e for the emitter e it joins
     for (; e < found.size(); ++e) {
@@ -127,11 +130,11 @@ void add_horosphere_emitters(const Scene& scene, const std::vector<Mat4>& group,
       emitting.gpu.kind = uint32_t(EmitterKind::Horosphere);
       emitting.gpu.center = to_float4(l);
       emitting.gpu.radiance = to_float4(le, 0);
-      emitting.horosphere = l;
       found.push_back(emitting);
       h = Mat4::identity();
     }
-    add_horoball_images(group, *h, found[e].horosphere, cutoff, found[e].images);
+    for (const Image& mine : own)  // g_m l = g_m h l_e
+      add_distinct(found[e].images, {mine.distance, mine.g * *h, mine.center});
     found[e].area += horosphere_area_in_domain(scene.manifold, l);
     shape_emitter[s] = uint32_t(e);
   }

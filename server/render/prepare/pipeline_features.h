@@ -53,9 +53,10 @@ struct PipelineFeatures {
   bool sphere_emitters = false, triangle_emitters = false;
   bool horosphere_emitters = false;      // a cusp's emissive horospheres (H3, with shapes)
   // Emission that light sampling cannot offer: images of area lights past the cutoff, or an
-  // emissive shape of a kind that is no light source. With NEE the path then goes on past its last bounce to find it by BSDF
-  // sampling (weight 1 where light sampling could not have produced it, 0 elsewhere), at the
-  // cost of one more geodesic; without it that light would be lost at the last bounce.
+  // emissive shape of a kind that is no light source. With NEE the path then goes on past its
+  // last bounce to find it by BSDF sampling (weight 1 where light sampling could not have
+  // produced it, 0 elsewhere), at the cost of one more geodesic; without it that light would
+  // be lost at the last bounce.
   bool unsampled_emission = false;
   bool transmission = false;             // the dielectric lobe
   // The device can skip a primitive type during traversal (SKIP_AABBS / SKIP_TRIANGLES): set
