@@ -147,5 +147,56 @@ TEST(PassSlicer, ANewViewGuessesAgainAndACheapPassIsOneDispatch) {
   EXPECT_EQ(last.dispatches, 1);
 }
 
+// A GPU: a dispatch takes as long as its longest path (kFloor, one thread's chain of
+// traversals) or as its pixel samples at the device's rate, whichever is longer.
+class GpuTarget final : public SliceTarget {
+ public:
+  static constexpr double kFloor = 3e-3, kPerSample = 30e-9;
+  GpuTarget(int width, int height, double parallel)
+      : width_(width), height_(height), parallel_(parallel) {}
+  int width() const override { return width_; }
+  int height() const override { return height_; }
+  double seconds() const override { return now_; }
+  double parallel_pixel_samples() const override { return parallel_; }
+  void render_region(uint32_t samples, const PixelRegion& region) override {
+    now_ += 20e-6 + std::max(kFloor, kPerSample * samples * region.columns * region.rows);
+    ++dispatches;
+  }
+  void finish_pass(uint32_t) override {}
+  void resize(int width, int height) { width_ = width, height_ = height; }
+  int dispatches = 0;
+
+ private:
+  int width_, height_;
+  double parallel_;
+  double now_ = 1000;
+};
+
+// The cost a GPU's slicer learns: close to its rate, so that a moving view (render_session.cpp
+// sizes it from seconds_per_pixel_sample()) keeps most of its pixels, and a walk's small views
+// take a dispatch or two each. Counted per pixel of a small dispatch, the same device looked 20
+// times dearer: moving views went to 80 px wide and took dozens of dispatches at the floor.
+TEST(PassSlicer, AGpusSmallDispatchesDoNotMakeItsPixelsLookDear) {
+  GpuTarget gpu(640, 480, PassSlicer::kGpuParallelPixelSamples);
+  PassSlicer slicer(kSlice);
+  while (!slicer.render_slice(gpu)) {}
+  EXPECT_LT(slicer.seconds_per_pixel_sample(), 2 * GpuTarget::kPerSample);
+  for (int move = 0; move < 20; ++move) {  // a walk: each view 320 x 240, one pass each
+    gpu.resize(320, 240);
+    slicer.restart();
+    const int dispatches = gpu.dispatches;
+    const double start = gpu.seconds();
+    EXPECT_TRUE(slicer.render_slice(gpu));  // the whole view in one slice
+    EXPECT_LE(gpu.dispatches - dispatches, 2);  // 65536 pixels, then the rest
+    EXPECT_LT(gpu.seconds() - start, 2 * GpuTarget::kFloor + 320 * 240 * GpuTarget::kPerSample);
+  }
+  EXPECT_LT(slicer.seconds_per_pixel_sample(), 2 * GpuTarget::kPerSample);
+
+  GpuTarget counted_per_pixel(640, 480, 1);
+  PassSlicer fooled(kSlice);
+  while (!fooled.render_slice(counted_per_pixel)) {}
+  EXPECT_GT(fooled.seconds_per_pixel_sample(), 20 * GpuTarget::kPerSample);
+}
+
 }  // namespace
 }  // namespace geodesic::test

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace geodesic {
 
@@ -20,6 +21,9 @@ class RendererTarget final : public SliceTarget {
     renderer_.render_region(samples, region);
   }
   void finish_pass(uint32_t samples) override { renderer_.finish_pass(samples); }
+  double parallel_pixel_samples() const override {
+    return renderer_.context().description().cpu ? 1 : PassSlicer::kGpuParallelPixelSamples;
+  }
 
  private:
   Renderer& renderer_;
@@ -54,21 +58,22 @@ uint64_t PassSlicer::proven_pixels(double seconds, uint64_t most) {
   return at - next_pixel_;
 }
 
-uint64_t PassSlicer::next_pixels(double seconds, uint64_t most, bool first) {
-  if (largest_pixel_samples_ == 0) return std::min(kFirstPixels, most);  // nothing measured yet
+uint64_t PassSlicer::next_pixels(double seconds, uint64_t most, bool first,
+                                 uint64_t first_pixels) {
+  if (largest_pixel_samples_ == 0) return std::min(first_pixels, most);  // nothing measured yet
   uint64_t pixels = 0;
   if (!measured_.empty()) {
     pixels = proven_pixels(seconds, most);
   } else {
     // A guess: the cost of the pixels just before in row order (at a pass's start, the cost
     // measured so far). Small dispatches, so that a guess far too low costs one of them, not the
-    // slice; but kFirstPixels at least (a dispatch of a few pixels leaves the device's threads
+    // slice; but first_pixels at least (a dispatch of a few pixels leaves the device's threads
     // idle), unless even those do not fit.
     const double guess = measuring_.empty() ? seconds_per_pixel_sample_ : measuring_.back().cost;
     const double per_pixel = guess * batch_;
     const auto fit = [&](double s) { return uint64_t(std::min(s / per_pixel, double(most))); };
     pixels = std::max(fit(std::min(seconds, slice_seconds_ / kUnprovenSplit)),
-                      std::min(kFirstPixels, fit(seconds)));
+                      std::min(first_pixels, fit(seconds)));
   }
   // A slice renders a pixel at least, however dear: the pass goes on.
   return std::clamp<uint64_t>(pixels, first ? 1 : 0, most);
@@ -81,29 +86,36 @@ bool PassSlicer::render_slice(SliceTarget& target) {
   // The last pass's costs are this pass's only if they cover its pixels (restart() clears them
   // for a new view; a size changed without one is a new view too).
   if (whole_pass && !measured_.empty() && measured_.back().end != total) measured_.clear();
-  // The slice's pixel samples, at most: kFirstPixels until a cost is measured.
+  // A dispatch's cost is counted over the device's parallel width at least, as it takes about
+  // as long: otherwise a GPU's small dispatches, timed by one thread's path, would make every
+  // pixel look dear, the next dispatches small, and so on (a walk at 1 frame/s, 80 px wide).
+  const double parallel = std::max(target.parallel_pixel_samples(), 1.0);
+  const uint64_t first_pixels = std::max(kFirstPixels, uint64_t(std::ceil(parallel / batch_)));
+  // The slice's pixel samples, at most: first_pixels until a cost is measured.
   const double most = largest_pixel_samples_ > 0 ? kMaxGrowth * largest_pixel_samples_
-                                                 : double(kFirstPixels) * batch_;
+                                                 : double(first_pixels) * batch_;
   const double start = target.seconds();
-  double spent = 0, samples = 0;
+  double spent = 0, samples = 0, counted = 0;
   for (bool first = true;; first = false) {
     const uint64_t room = uint64_t(std::max((most - samples) / batch_, first ? 1.0 : 0.0));
     const uint64_t pixels =
-        next_pixels(slice_seconds_ - spent, std::min(room, total - next_pixel_), first);
+        next_pixels(slice_seconds_ - spent, std::min(room, total - next_pixel_), first, first_pixels);
     if (pixels == 0) break;
     const PixelRegion region = row_order(next_pixel_, pixels, width);
     const double before = target.seconds();
     target.render_region(batch_, region);
     const double after = target.seconds();
     const uint64_t rendered = uint64_t(region.columns) * region.rows;
-    measuring_.push_back({next_pixel_ + rendered, (after - before) / (double(rendered) * batch_)});
+    const double dispatched = std::max(double(rendered) * batch_, parallel);
+    measuring_.push_back({next_pixel_ + rendered, (after - before) / dispatched});
     next_pixel_ += rendered;
     samples += double(rendered) * batch_;
+    counted += dispatched;
     spent = after - start;
     // The clock check: another dispatch only while a worthwhile one fits, in time (that of a
-    // dispatch of guessed pixels) and in pixel samples (kFirstPixels).
+    // dispatch of guessed pixels) and in pixel samples (first_pixels).
     if (next_pixel_ == total || slice_seconds_ - spent < slice_seconds_ / kUnprovenSplit ||
-        most - samples < double(kFirstPixels) * batch_)
+        most - samples < double(first_pixels) * batch_)
       break;
   }
   last_seconds_ = spent;
@@ -111,7 +123,7 @@ bool PassSlicer::render_slice(SliceTarget& target) {
   largest_pixel_samples_ = std::max(largest_pixel_samples_, last_pixel_samples_);
   // A rising cost is adopted at once: it sizes a new view's first dispatch, and one too low
   // overruns. A falling one is smoothed.
-  const double cost = spent / samples;
+  const double cost = spent / counted;
   seconds_per_pixel_sample_ =
       cost > seconds_per_pixel_sample_ ? cost : 0.7 * seconds_per_pixel_sample_ + 0.3 * cost;
 

@@ -40,6 +40,10 @@ class SliceTarget {
   virtual void finish_pass(uint32_t samples) = 0;
   // Seconds on a steady clock: slices are timed on it.
   virtual double seconds() const;
+  // The pixel samples a dispatch needs to keep the device's cores busy: a smaller one takes
+  // about as long. 1 on a CPU, whose few cores a handful of pixels fill; a GPU's dispatch of a
+  // few pixels takes as long as their longest path, one thread's chain of traversals.
+  virtual double parallel_pixel_samples() const { return 1; }
 
  protected:
   ~SliceTarget() = default;
@@ -48,8 +52,11 @@ class SliceTarget {
 class PassSlicer {
  public:
   static constexpr uint32_t kMaxBatch = 256;  // the default: larger passes are not faster
-  // Pixels in the first slice, before the cost is known.
+  // Pixels in the first slice, before the cost is known, and in a guessed dispatch at least
+  // (or the target's parallel_pixel_samples(), where more).
   static constexpr uint64_t kFirstPixels = 64;
+  // parallel_pixel_samples() of a GPU: a few times the threads its cores hold at once.
+  static constexpr double kGpuParallelPixelSamples = 65536;
   // A slice has at most this many times the pixel samples of the largest one so far: a new
   // scene's first slices grow from kFirstPixels (64, 256, 1024, ...) as its cost is learnt.
   static constexpr double kMaxGrowth = 4;
@@ -90,7 +97,7 @@ class PassSlicer {
   };
   // The next dispatch's pixels: `seconds` of the slice left, at most `most` pixels; 0: none
   // worth a dispatch (the first of a slice has one at least).
-  uint64_t next_pixels(double seconds, uint64_t most, bool first);
+  uint64_t next_pixels(double seconds, uint64_t most, bool first, uint64_t first_pixels);
   // Pixels from next_pixel_, as many as the costs the last whole pass measured fit in `seconds`
   // (at most `most`).
   uint64_t proven_pixels(double seconds, uint64_t most);
