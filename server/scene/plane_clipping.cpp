@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "scene/preparation_budget.h"
+
 namespace geodesic {
 namespace {
 
@@ -40,6 +42,7 @@ double reach(const Polyhedron& p) {
 ClippedPolyhedron clip_planes(const std::vector<ChartPlane>& candidates, double tolerance,
                               double horizon, std::size_t max_kept) {
   ClippedPolyhedron c;
+  int clips = 0;
   for (int i = 0; i < static_cast<int>(candidates.size()); ++i) {
     const ChartPlane& plane = candidates[i];
     const bool open = !c.polyhedron.bounded;
@@ -48,10 +51,11 @@ ClippedPolyhedron clip_planes(const std::vector<ChartPlane>& candidates, double 
     for (const Vec3& v : c.polyhedron.vertices)
       cuts = cuts || dot(plane.normal, v) > plane.delta + tolerance * std::max(1.0, std::abs(plane.delta));
     if (!cuts) continue;
-    if (c.kept.size() >= max_kept) {
+    if (c.kept.size() >= max_kept || ++clips > kMaxClips) {
       c.polyhedron.bounded = false;
       break;
     }
+    check_preparation_budget();
     std::vector<int> next = c.kept;
     next.push_back(i);
     c = rebuild(candidates, std::move(next), tolerance, horizon);

@@ -19,7 +19,12 @@ struct ClippedPolyhedron {
 // open (unbounded, or with a vertex at chart radius >= horizon: the Klein ball's rim in H3),
 // then whenever one cuts off a vertex, until the next plane lies beyond every vertex; planes
 // that no longer bound a face are dropped as it shrinks. Gives up (unbounded) after max_kept
-// planes.
+// planes, or after kMaxClips planes that cut it (each a rebuild): in H3 a cell of infinite
+// volume reaches past the rim, where every bisector of the ball cuts it again, and a ball of
+// 10^5 elements cost 10^5 rebuilds (24 s for one generator text a fuzzer found). The domains of
+// the catalogue, the Curved Spaces files and the tests need 190 at most. Checks the thread's
+// preparation budget (scene/preparation_budget.h) before each rebuild.
+inline constexpr int kMaxClips = 1024;
 ClippedPolyhedron clip_planes(const std::vector<ChartPlane>& candidates, double tolerance,
                               double horizon, std::size_t max_kept);
 
