@@ -50,6 +50,23 @@ std::string error_of(const std::string& text) {
   return "";
 }
 
+// error_of(text) under a preparation budget of `budget` seconds (never cancelled), and the
+// seconds it took.
+struct Refusal {
+  std::string error;
+  double seconds;
+};
+Refusal refusal_within(const std::string& text, double budget) {
+  const std::atomic<bool> never{false};
+  const auto start = Clock::now();
+  std::string error;
+  {
+    const PreparationScope scope(budget, &never);
+    error = error_of(text);
+  }
+  return {error, seconds_since(start)};
+}
+
 TEST(EnumerationBudget, TwoHundredNearlyParallelTranslationsAreRefusedWellUnderASecond) {
   const auto start = Clock::now();
   const std::string error = error_of(nearly_parallel(200));
@@ -80,15 +97,8 @@ TEST(EnumerationBudget, TwoHundredRedundantLatticeGeneratorsGiveTheUnitCube) {
 }
 
 TEST(EnumerationBudget, ASpentBudgetEndsTheEnumerationWithANamedError) {
-  const std::string text = nearly_parallel(7000);  // 337 KB: minutes without a budget
-  const std::atomic<bool> never{false};
-  const auto start = Clock::now();
-  std::string error;
-  {
-    const PreparationScope budget(0.3, &never);
-    error = error_of(text);
-  }
-  const double seconds = seconds_since(start);
+  // 337 KB: minutes without a budget.
+  const auto [error, seconds] = refusal_within(nearly_parallel(7000), 0.3);
   EXPECT_EQ(error, "generators: the group enumeration exceeded 0.3 s (the server's time budget "
                    "for preparing a scene)");
   EXPECT_LT(seconds, 0.3 + 0.5);
@@ -101,15 +111,8 @@ TEST(EnumerationBudget, ASpentBudgetEndsTheEnumerationWithANamedError) {
 // run (load/sanitizer.h); the budget, the daemon's guard, would name itself instead of the
 // reason had it been spent.
 TEST(EnumerationBudget, AnInfiniteVolumeCellThatEveryBisectorCutsIsRefusedWithItsReason) {
-  const std::string text = "j)]]# m004Xn[1  1]\n[0  1]\n\n[(1+0j), 2j], [-1j, (1-2j)j)]]# ]]";
-  const std::atomic<bool> never{false};
-  const auto start = Clock::now();
-  std::string error;
-  {
-    const PreparationScope budget(20, &never);
-    error = error_of(text);
-  }
-  const double seconds = seconds_since(start);
+  const auto [error, seconds] = refusal_within(
+      "j)]]# m004Xn[1  1]\n[0  1]\n\n[(1+0j), 2j], [-1j, (1-2j)j)]]# ]]", 20);
   EXPECT_EQ(error, "generators: the Dirichlet domain is unbounded: the quotient of hyperbolic "
                    "space by these generators has infinite volume (the domain reaches the sphere "
                    "at infinity in more than the isolated points of cusps) (the cell was still "
