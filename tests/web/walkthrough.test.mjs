@@ -123,14 +123,23 @@ const shownFrame = (p) => p.evaluate(() => Number(document.getElementById('view'
 // Waits until the canvas shows a frame at least `minSpp` samples deep that satisfies `accept`
 // (given the frame's { scene, spp, moving }): the frames on the canvas and on the socket are
 // matched by their frame numbers.
+// An `error` from the server meanwhile ends the wait at once, with its text; a timeout says
+// what the page last sent and received.
 async function waitForShownFrame(p, minSpp, accept = () => true, timeout = FRAME_TIMEOUT) {
-  const deadline = Date.now() + timeout;
+  const start = Date.now();
+  const deadline = start + timeout;
+  const logStart = wsLog.length;
   for (;;) {
     const n = await shownFrame(p);
     const info = frameScenes().get(n);
     if (info && !info.moving && info.spp >= minSpp && accept({ frame: n, ...info })) return { frame: n, ...info };
+    const error = wsLog.slice(logStart).find((e) => e.dir === 'received' && e.msg.type === 'error');
+    if (error) throw new Error(`the server answered an error while the test waited for a frame: ${JSON.stringify(error.msg)}`);
     if (Date.now() > deadline) {
-      throw new Error(`no frame with spp >= ${minSpp} shown in ${timeout} ms (showing ${n}: ${JSON.stringify(info)})`);
+      const seen = wsLog.slice(logStart).filter((e) => e.dir === 'sent' || e.msg.type !== 'frame');
+      const last = seen.slice(-6).map((e) => `${e.dir} ${JSON.stringify(e.msg).slice(0, 120)}`);
+      throw new Error(`no frame with spp >= ${minSpp} shown in ${timeout} ms (showing ${n}: ${JSON.stringify(info)}); ` +
+                      `messages other than frames since the wait began: ${last.join(' | ') || 'none'}`);
     }
     await p.waitForTimeout(100);
   }
@@ -457,10 +466,18 @@ test('a cusped space opens from SnapPy\'s Moebius matrices, and the picker lists
   const file = path.join(os.tmpdir(), `geodesic-m004-${process.pid}.txt`);
   fs.writeFileSync(file, '# Figure-eight knot complement, from SnapPy\n[1  1]\n[0  1]\n\n' +
                          '[1  0]\n[0.5 - 0.86602540378443865*I  1]\n');
-  await page.setInputFiles('#generator-file', file);
-  fs.unlinkSync(file);
   const title = 'Figure-eight knot complement, from SnapPy';
-  await waitForShownFrame(page, 2, (f) => f.scene === title);
+  const asked = Date.now();
+  // Chromium reads a picked file when the page asks for its text, after setInputFiles has
+  // returned: the file stays until the page has sent it.
+  try {
+    await page.setInputFiles('#generator-file', file);
+    await waitFor(() => sentOfType('open').some((m) => m.generators?.includes(title)), 'the open of the file');
+  } finally {
+    fs.rmSync(file, { force: true });
+  }
+  const shown = await waitForShownFrame(page, 2, (f) => f.scene === title);
+  console.log(`# cusped space: frame ${shown.frame} at ${shown.spp} spp, ${Date.now() - asked} ms after the file was picked`);
   const scene = receivedOfType('scene').at(-1);
   assert.equal(scene.name, title);
   assert.equal(scene.source, 'generators');
