@@ -1,6 +1,7 @@
 #include "render/service/render_service.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
@@ -11,6 +12,21 @@
 #include "scene/camera_motion.h"
 
 namespace geodesic {
+namespace {
+
+// Counts a scene preparation for the render thread's stepping aside, for as long as it runs.
+class Preparing {
+ public:
+  explicit Preparing(std::atomic<int>& count) : count_(count) { ++count_; }
+  ~Preparing() { --count_; }
+  Preparing(const Preparing&) = delete;
+  Preparing& operator=(const Preparing&) = delete;
+
+ private:
+  std::atomic<int>& count_;
+};
+
+}  // namespace
 
 PreparedScene::PreparedScene() = default;
 PreparedScene::~PreparedScene() = default;
@@ -40,6 +56,7 @@ ResolvedScene RenderService::resolve(const SceneSource& source) const {
 }
 
 PreparedScene RenderService::prepare_scene(ResolvedScene resolved) const {
+  const Preparing preparing(impl_->preparing);
   Scene& scene = resolved.scene;
   impl_->check_limits(scene);
   PreparedScene prepared;
@@ -74,6 +91,7 @@ void RenderService::warm_up(const Renderer& renderer, const Scene& scene) const 
 }
 
 PreparedScene RenderService::prepare_scene(const SceneSource& source) const {
+  const Preparing preparing(impl_->preparing);  // the group enumeration too
   return prepare_scene(resolve(source));
 }
 

@@ -64,6 +64,10 @@ struct RenderService::Impl {
   mutable std::unique_ptr<VulkanContext> warm_device;
   // Callers of run_beside working on the device now: the service ends after them.
   mutable int beside = 0;
+  // Scenes being prepared (resolved, built, their pipelines compiled ahead) on threads below the
+  // render thread's priority: while there are any, the render thread steps aside after each
+  // refining slice, so that lavapipe's threads do not starve them (render_thread.cpp).
+  mutable std::atomic<int> preparing{0};
   mutable std::condition_variable beside_done;
   ServiceStats stats;
   // A copy of `stats` for stats(): /healthz and /metrics never wait for the device lock.

@@ -69,9 +69,12 @@ void RenderService::Impl::run() {
       }
       if (!rota.out_of_turn()) refining = Clock::now() - slice_start;
     }
-    // A scene being prepared beside (a client waits for it, on threads below this one's
-    // priority) gets the processor for as long again as a refining slice took.
-    const auto step_aside = beside > 0 ? std::min(refining, kSlice) : Clock::duration{};
+    // A scene being prepared or built beside (a client waits for it, on threads below this
+    // one's priority) gets the processor for as long again as a refining slice took: its
+    // group enumeration, its renderer and the compilation of its pipeline ahead (warm_up),
+    // which lavapipe's threads at full speed would otherwise slow tenfold on a busy machine.
+    const auto step_aside =
+        beside > 0 || preparing.load() > 0 ? std::min(refining, kSlice) : Clock::duration{};
     // Let waiting callers (moves, new scenes) in between slices.
     publish();
     lock.unlock();
