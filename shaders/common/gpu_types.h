@@ -113,6 +113,11 @@ struct LightImage {
 // A cell of the chart atlas (server/render/prepare/cells.h).
 struct Cell {
   mat4 chart_isometry;  // model -> the cell's frame
+  // xyz: the corners of a chart box around everything the cell's segments trace (triangles,
+  // spheres, shapes; not the edge tubes), padded; lo > hi when the cell holds none. A segment
+  // that misses it skips the traversal (integrator/geodesic_tracer.glsl).
+  vec4 content_lo;
+  vec4 content_hi;
   uint face_begin;
   uint face_count;
   uint tube_begin;  // its edge tubes: tubes [tube_begin, tube_begin + tube_count)
@@ -192,7 +197,7 @@ struct SampleRange {
 #ifdef __cplusplus
 static_assert(sizeof(Material) == 96 && sizeof(Sphere) == 32 && sizeof(SphereRef) == 8 &&
               sizeof(PointLight) == 32 && sizeof(TriangleInfo) == 16 && sizeof(Emitter) == 112 &&
-              sizeof(LightImage) == 80 && sizeof(Cell) == 96 && sizeof(Tube) == 48 &&
+              sizeof(LightImage) == 80 && sizeof(Cell) == 128 && sizeof(Tube) == 48 &&
               sizeof(CellFace) == 112 && sizeof(FrameUniforms) == 144 &&
               sizeof(SampleRange) == 24,
               "a 16-byte multiple for every array element, std140's for the frame");

@@ -88,7 +88,8 @@ layout(set = 0, binding = BINDING_LIGHT_IMAGES, std430)
 // Which samples this dispatch adds, to which pixels (SampleRange).
 layout(push_constant) uniform Push { SampleRange push; };
 
-// Rays traced by this invocation so far; the entry points' trace functions count into it.
+// Chart segments followed by this invocation so far (integrator/geodesic_tracer.glsl), whether
+// traversed or turned away by their cell's content box.
 uint tracedRays = 0u;
 // Faces crossed (walls included) and rays given up at MAX_CROSSINGS by this invocation.
 uint crossedFaces = 0u;

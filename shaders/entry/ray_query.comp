@@ -15,7 +15,6 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 // The closest (or, for shadows, any) hit along the chart segment o + s d, s in [0, sMax], in
 // the given cell; (p, v) is the same ray in the cell's frame.
 ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool anyHit) {
-  ++tracedRays;
   ChartHit best = noChartHit();
 #if defined(SPHERE_LIST)
   // The cell's few spheres one by one; the acceleration structure holds its triangles alone,

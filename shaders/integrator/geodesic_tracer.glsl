@@ -86,6 +86,25 @@ GeodesicRay crossFace(GeodesicRay ray, uint face, float t) {
 }
 #endif
 
+#if defined(CELL_CROSSING)
+// Whether the chart segment o + s d, 0 <= s <= sMax, meets the box around what its cell traces
+// (Cell.content_lo/hi): one that does not cannot hit anything there, and skips the traversal.
+// Crossing a small domain's faces, most segments of a long geodesic run through the empty part
+// of a cell. A segment on the box's boundary plane may be turned away: the box is padded
+// beyond everything in it.
+bool meetsCellContent(uint cellIndex, vec3 o, vec3 d, float sMax) {
+  Cell cell = cellRecord(cellIndex);
+  vec3 inv = 1.0 / d;
+  vec3 a = (cell.content_lo.xyz - o) * inv;
+  vec3 b = (cell.content_hi.xyz - o) * inv;
+  vec3 near = min(a, b);
+  vec3 far = max(a, b);
+  float enter = max(max(near.x, near.y), max(near.z, 0.0));
+  float leave = min(min(far.x, far.y), min(far.z, sMax));
+  return enter <= leave;
+}
+#endif
+
 #if defined(GEOMETRY_SPHERICAL) && defined(CELL_CROSSING)
 const float GEODESIC_PERIOD = 6.28318530717958647692 * (1.0 + 1e-4);
 #endif
@@ -98,6 +117,7 @@ bool followGeodesic(inout GeodesicRay ray, float maxDistance, bool anyHit, out C
 #if !defined(CELL_CROSSING)
   ChartLine whole = chartLineOf(ray);
   float sWhole = maxDistance >= FAR ? FAR : chartParameter(whole.p, whole.v, maxDistance);
+  ++tracedRays;
   hit = traceChart(whole.o, whole.d, sWhole, ray.cell, whole.p, whole.v, anyHit);
   return hit.kind != HIT_NONE;
 #else
@@ -119,6 +139,7 @@ bool followGeodesic(inout GeodesicRay ray, float maxDistance, bool anyHit, out C
     float remaining = maxDistance - travelled;
     bool last = face == NO_FACE || remaining <= tExit;
     float sMax = remaining < tExit ? chartParameter(line.p, line.v, remaining) : sExit;
+    ++tracedRays;
 #if defined(HAS_TUBES)
     // A tube hit bounds the traversal: only something nearer can replace it.
     ChartHit tube = nearestTube(ray.cell, line.o, line.d, sMax, anyHit);
@@ -126,10 +147,15 @@ bool followGeodesic(inout GeodesicRay ray, float maxDistance, bool anyHit, out C
       hit = tube;
       return true;
     }
-    hit = traceChart(line.o, line.d, min(sMax, tube.s), ray.cell, line.p, line.v, anyHit);
+    float sTrace = min(sMax, tube.s);
+    hit = meetsCellContent(ray.cell, line.o, line.d, sTrace)
+              ? traceChart(line.o, line.d, sTrace, ray.cell, line.p, line.v, anyHit)
+              : noChartHit();
     if (hit.kind == HIT_NONE) hit = tube;
 #else
-    hit = traceChart(line.o, line.d, sMax, ray.cell, line.p, line.v, anyHit);
+    hit = meetsCellContent(ray.cell, line.o, line.d, sMax)
+              ? traceChart(line.o, line.d, sMax, ray.cell, line.p, line.v, anyHit)
+              : noChartHit();
 #endif
     if (hit.kind != HIT_NONE) return true;
     if (last) return false;
