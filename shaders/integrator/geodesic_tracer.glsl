@@ -140,6 +140,7 @@ bool followGeodesic(inout GeodesicRay ray, float maxDistance, bool anyHit, out C
     bool last = face == NO_FACE || remaining <= tExit;
     float sMax = remaining < tExit ? chartParameter(line.p, line.v, remaining) : sExit;
     ++tracedRays;
+    float sTrace = sMax;
 #if defined(HAS_TUBES)
     // A tube hit bounds the traversal: only something nearer can replace it.
     ChartHit tube = nearestTube(ray.cell, line.o, line.d, sMax, anyHit);
@@ -147,15 +148,13 @@ bool followGeodesic(inout GeodesicRay ray, float maxDistance, bool anyHit, out C
       hit = tube;
       return true;
     }
-    float sTrace = min(sMax, tube.s);
+    sTrace = min(sMax, tube.s);
+#endif
     hit = meetsCellContent(ray.cell, line.o, line.d, sTrace)
               ? traceChart(line.o, line.d, sTrace, ray.cell, line.p, line.v, anyHit)
               : noChartHit();
+#if defined(HAS_TUBES)
     if (hit.kind == HIT_NONE) hit = tube;
-#else
-    hit = meetsCellContent(ray.cell, line.o, line.d, sMax)
-              ? traceChart(line.o, line.d, sMax, ray.cell, line.p, line.v, anyHit)
-              : noChartHit();
 #endif
     if (hit.kind != HIT_NONE) return true;
     if (last) return false;

@@ -126,8 +126,7 @@ const shownFrame = (p) => p.evaluate(() => Number(document.getElementById('view'
 // An `error` from the server meanwhile ends the wait at once, with its text; a timeout says
 // what the page last sent and received.
 async function waitForShownFrame(p, minSpp, accept = () => true, timeout = FRAME_TIMEOUT) {
-  const start = Date.now();
-  const deadline = start + timeout;
+  const deadline = Date.now() + timeout;
   const logStart = wsLog.length;
   for (;;) {
     const n = await shownFrame(p);

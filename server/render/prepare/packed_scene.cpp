@@ -190,8 +190,8 @@ void order_spatially(uint32_t first, uint32_t first_ref, PackedScene& out) {
   permute(out.sphere_bounds, first_ref, 1, order);
 }
 
-// The chart box around what the cell's segments trace: its triangles (from `first`), sphere
-// refs (from `first_ref`) and shape refs (from `first_shape`), padded by 1e-4 of the
+// The chart box around what the cell's segments trace: its triangles, sphere refs and shape
+// refs (the ranges in `g`, the triangles last in `out`), padded by 1e-4 of the
 // coordinates beyond the boxes' own padding, so that the shader's float slab test never turns
 // away a segment that meets one of them. Empty (lo > hi) when the cell traces nothing.
 void set_content_box(const PackedScene& out, const CellGeometry& g, GpuCell& packed) {
