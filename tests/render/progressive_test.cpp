@@ -83,6 +83,37 @@ TEST(Progressive, APassCutIntoSlicesOfPartRowsOrBandsAddsTheSameSamples) {
   EXPECT_TRUE(std::equal(expected.begin(), expected.end(), at_once.begin()));
 }
 
+// The ray-query kernel deals its workgroups' tiles round the dispatch (dealtTile in
+// shaders/entry/ray_query.comp): every pixel still gets each sample exactly once, whether the
+// dispatch has fewer groups than the deal's 16 blocks, a multiple of them, or a remainder, and
+// slices of a pass (other dispatch shapes) add the same samples as the whole image at once.
+TEST(Progressive, EveryPixelGetsEachSampleOnceWhateverTheDispatchsShape) {
+  Scene scene = small_cornell();
+  for (const auto [width, height] : {std::pair{100, 36}, {8, 8}, {136, 9}, {1, 129}, {128, 64}}) {
+    scene.render.width = width;
+    scene.render.height = height;
+    Renderer whole(device(), scene);
+    whole.add_samples(3);  // samples 0 and 2 in the even half, 1 in the odd
+    const auto sums = whole.accumulation();
+    const size_t pixels = size_t(width) * height;
+    size_t wrong = 0;
+    for (size_t p = 0; p < pixels; ++p)
+      wrong += sums[4 * p + 3] != 2.0f || sums[4 * (pixels + p) + 3] != 1.0f;
+    EXPECT_EQ(wrong, 0u) << width << " x " << height;
+  }
+  scene.render.width = 100;  // 13 x 5 groups: 4 per block and one left over
+  scene.render.height = 36;
+  Renderer once(device(), scene);
+  once.add_samples(1);
+  const auto expected = once.accumulation();
+  for (const double slice_seconds : {1e-12, 1e-3}) {
+    int slices = 0;
+    const auto sliced = sliced_pass(scene, slice_seconds, slices);
+    EXPECT_GT(slices, 2);
+    EXPECT_TRUE(std::equal(expected.begin(), expected.end(), sliced.begin()));
+  }
+}
+
 TEST(Progressive, SlicesGrowFromTheMeasuredCostAndThePassDoublesItsBatchWhenItFits) {
   Scene scene = small_cornell();
   scene.render.width = scene.render.height = 64;
