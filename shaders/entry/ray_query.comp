@@ -93,10 +93,10 @@ ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool 
 // order), so with groups in image order one thread gets the top of a slice and another the
 // bottom, and the first to finish idles while the other ends: a still view's 40 ms slices of a
 // quotient space, whose pixels differ in cost many times over, kept the two cores 157 % busy.
-// Workgroup i therefore takes tile b q + min(b, r) + i / K, b = i mod K, for the n = q K + r
-// tiles: the K blocks of the tiles are dealt round, so every run of consecutive workgroups
-// (every thread's share) holds a part of each block, spread over the whole region. A bijection
-// of [0, n): block b holds q + (b < r) tiles, the number of i < n with i mod K = b.
+// Workgroup i therefore takes tile b q + min(b, r) + i / K, b = i mod K (K = TILE_BLOCKS), for
+// the n = q K + r tiles: the K blocks of the tiles are dealt round, so every run of consecutive
+// workgroups (every thread's share) holds a part of each block, spread over the whole region. A
+// bijection of [0, n): block b holds q + (b < r) tiles, the number of i < n with i mod K = b.
 const uint TILE_BLOCKS = 16u;
 
 uvec2 dealtTile() {
