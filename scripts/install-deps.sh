@@ -44,7 +44,10 @@ debian_archive_uri() {
 
 if [ "$mode" = --runtime ]; then
   # The Vulkan loader (lavapipe follows below) and curl for the container's health check.
-  packages=(libvulkan1 curl)
+  # libegl1 (with libglvnd0), libx11-6, libxext6: NVIDIA's Vulkan driver (libGLX_nvidia.so.0,
+  # which the NVIDIA Container Toolkit mounts) loads them and, without libEGL, answers no
+  # vkCreateInstance: the loader then finds no driver (seen with driver 580 on an H200).
+  packages=(libvulkan1 curl libegl1 libx11-6 libxext6)
 else
   # zlib1g-dev: assimp's CMake package links libz.so, and libassimp-dev does not depend on it.
   # glslang-tools: glslang's CMake package names glslangValidator.

@@ -4,8 +4,8 @@
 # the HEALTHCHECK passes (`podman healthcheck run`: without systemd podman never runs it by
 # itself), /api needs the token (401), a WebSocket gets a JPEG frame, a job's PNG comes back,
 # `podman restart` keeps the job, a job killed with the daemon (kill -9) resumes from its
-# checkpoint, the daemon runs as uid/gid 10001, the binary is stripped, and the image is under
-# 1 GB (its size is printed). Then docker/compose.yaml with podman-compose.
+# checkpoint, the daemon runs as uid/gid 10001, the binary is stripped, the image holds the
+# libraries NVIDIA's Vulkan driver loads, and the image is under 1 GB (its size is printed). Then docker/compose.yaml with podman-compose.
 # Exits 77 (skipped), saying so, only when podman cannot start a container on this machine.
 # Needs root (rootful podman, debootstrap).
 set -euo pipefail
@@ -47,6 +47,14 @@ echo "image test: image size $((size / 1000000)) MB"
 [ "$size" -lt 1000000000 ] || fail "the image is $((size / 1000000)) MB, not under 1 GB"
 healthcheck=$(command podman image inspect "$image" --format '{{.HealthCheck}}')
 [[ "$healthcheck" == *healthz* ]] || fail "the image has no HEALTHCHECK ($healthcheck)"
+
+# What NVIDIA's Vulkan driver loads besides itself (docker/compose.gpu.yaml; the toolkit mounts
+# the driver, not these): without libEGL it creates no instance and the daemon finds no device.
+libs=$(command podman run --rm "${PODMAN_RUN_OPTS[@]}" --entrypoint /sbin/ldconfig "$image" -p) ||
+  fail "ldconfig -p in the image"
+for lib in libEGL.so.1 libGLdispatch.so.0 libX11.so.6 libXext.so.6; do
+  grep -q "$lib " <<<"$libs" || fail "the image lacks $lib, which NVIDIA's Vulkan driver loads"
+done
 
 port=$(( 20000 + RANDOM % 20000 ))
 command podman run -d --name "$name" "${PODMAN_RUN_OPTS[@]}" -e GEODESIC_TOKEN="$token" \
