@@ -368,21 +368,31 @@ std::optional<ChartTriangleHit> intersect_chart_triangle(const Vec3& o, const Ve
                                                          const Vec3& a, const Vec3& b,
                                                          const Vec3& c, double s_min,
                                                          double s_max) {
-  // Moeller-Trumbore.
-  const Vec3 e1 = b - a, e2 = c - a;
-  const Vec3 p = cross(d, e2);
-  const double det = dot(e1, p);
-  if (det == 0) return std::nullopt;  // parallel to the plane, or a degenerate triangle
-  const double inv = 1 / det;
-  const Vec3 s = o - a;
-  const double u = dot(s, p) * inv;
-  if (u < 0 || u > 1) return std::nullopt;
-  const Vec3 q = cross(s, e1);
-  const double v = dot(d, q) * inv;
-  if (v < 0 || u + v > 1) return std::nullopt;
-  const double hit = dot(e2, q) * inv;
-  if (hit <= s_min || hit >= s_max) return std::nullopt;
-  return ChartTriangleHit{hit, u, v};
+  // Woop, Benthin and Wald's watertight test: the frame's z axis along d's largest component
+  // (x and y swapped where it is negative), the corners relative to o sheared so that d
+  // becomes z, then the signed areas U, V, W of the line's point against the edges bc, ca, ab.
+  const double dc[3] = {d.x, d.y, d.z};
+  const double ad[3] = {std::abs(d.x), std::abs(d.y), std::abs(d.z)};
+  const int z = ad[0] > ad[1] ? (ad[0] > ad[2] ? 0 : 2) : (ad[1] > ad[2] ? 1 : 2);
+  int x = (z + 1) % 3, y = (x + 1) % 3;
+  if (dc[z] < 0) std::swap(x, y);
+  const double shear_x = -dc[x] / dc[z], shear_y = -dc[y] / dc[z], shear_z = 1 / dc[z];
+  struct Sheared {
+    double x, y, z;
+  };
+  const auto shear = [&](const Vec3& p) {
+    const Vec3 r = p - o;
+    const double q[3] = {r.x, r.y, r.z};
+    return Sheared{q[x] + shear_x * q[z], q[y] + shear_y * q[z], q[z]};
+  };
+  const Sheared A = shear(a), B = shear(b), C = shear(c);
+  const double U = C.x * B.y - C.y * B.x, V = A.x * C.y - A.y * C.x, W = B.x * A.y - B.y * A.x;
+  if ((U < 0 || V < 0 || W < 0) && (U > 0 || V > 0 || W > 0)) return std::nullopt;
+  const double det = U + V + W;
+  if (det == 0) return std::nullopt;  // the line in the triangle's plane, or no triangle
+  const double hit = (U * A.z + V * B.z + W * C.z) * shear_z / det;
+  if (!(hit > s_min && hit <= s_max)) return std::nullopt;
+  return ChartTriangleHit{hit, V / det, W / det};
 }
 
 }  // namespace geodesic::model

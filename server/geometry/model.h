@@ -142,7 +142,10 @@ Vec4 offset_from_surface(GeometryKind k, const Vec4& q, const Vec4& n);
 
 // A chart line o + s d against the triangle abc given in the chart (geodesic triangles are
 // flat there in every geometry): what the acceleration structure reports, with Vulkan's
-// barycentrics (position = (1-u-v) a + u b + v c). Closed, two-sided, s in (s_min, s_max).
+// barycentrics (position = (1-u-v) a + u b + v c). Closed, two-sided, s in (s_min, s_max].
+// Woop, Benthin and Wald's watertight test (JCGT 2013), as its float twin
+// (shaders/geometry/triangle.glsl) is: in float, a line through an edge or a vertex that two
+// triangles share meets at least one of them.
 struct ChartTriangleHit {
   double s = 0;
   double u = 0;

@@ -118,6 +118,10 @@ struct Cell {
   // that misses it skips the traversal (integrator/geodesic_tracer.glsl).
   vec4 content_lo;
   vec4 content_hi;
+  // The same about its triangles alone, which a listed segment tests only when it meets it
+  // (TRIANGLE_LIST: primitives/triangle_list.glsl).
+  vec4 triangle_lo;
+  vec4 triangle_hi;
   uint face_begin;
   uint face_count;
   uint tube_begin;  // its edge tubes: tubes [tube_begin, tube_begin + tube_count)
@@ -129,6 +133,11 @@ struct Cell {
   // Its sphere refs, sphere refs [sphere_begin, sphere_begin + sphere_count) (SPHERE_LIST).
   uint sphere_begin;
   uint sphere_count;
+  // Its triangles, triangles [triangle_begin, triangle_begin + triangle_count) (TRIANGLE_LIST).
+  uint triangle_begin;
+  uint triangle_count;
+  uint pad0;
+  uint pad1;
 };
 
 // An edge tube: a capsule in its cell's chart (geometry/capsule.h, scene.h EdgeTube) and two
@@ -197,7 +206,7 @@ struct SampleRange {
 #ifdef __cplusplus
 static_assert(sizeof(Material) == 96 && sizeof(Sphere) == 32 && sizeof(SphereRef) == 8 &&
               sizeof(PointLight) == 32 && sizeof(TriangleInfo) == 16 && sizeof(Emitter) == 112 &&
-              sizeof(LightImage) == 80 && sizeof(Cell) == 128 && sizeof(Tube) == 48 &&
+              sizeof(LightImage) == 80 && sizeof(Cell) == 176 && sizeof(Tube) == 48 &&
               sizeof(CellFace) == 112 && sizeof(FrameUniforms) == 144 &&
               sizeof(SampleRange) == 24,
               "a 16-byte multiple for every array element, std140's for the frame");

@@ -53,7 +53,8 @@ layout(set = 0, binding = BINDING_NORMALS, std430)  // E3
 #if defined(LIGHTING_PAPER) && defined(HAS_POINT_LIGHTS)
 layout(set = 0, binding = BINDING_LIGHTS, std430) readonly buffer Lights { PointLight lights[]; };
 #endif
-#if defined(CELL_CROSSING) || defined(MULTIPLE_CHARTS) || defined(SPHERE_LIST)
+#if defined(CELL_CROSSING) || defined(MULTIPLE_CHARTS) || defined(SPHERE_LIST) || \
+    defined(TRIANGLE_LIST)
 layout(set = 0, binding = BINDING_CELLS, std430) readonly buffer Cells { Cell cells[]; };
 #endif
 #if defined(CELL_CROSSING)

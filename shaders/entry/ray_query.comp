@@ -11,6 +11,7 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 #include "common/core.glsl"
 #include "primitives/shape_candidate.glsl"
 #include "primitives/sphere_candidate.glsl"
+#include "primitives/triangle_list.glsl"
 
 // The closest (or, for shadows, any) hit along the chart segment o + s d, s in [0, sMax], in
 // the given cell; (p, v) is the same ray in the cell's frame.
@@ -26,7 +27,11 @@ ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool 
   if (anyHit && best.kind != HIT_NONE) return best;
   sMax = min(sMax, best.s);
 #endif
-#if defined(HAS_TRIANGLES) || defined(TRACED_BOXES)
+#if defined(TRIANGLE_LIST)
+  // And its few triangles one by one: nothing is traversed.
+  ChartHit triangle = nearestListedTriangle(cell, o, d, sMax, anyHit);
+  return triangle.kind != HIT_NONE ? triangle : best;
+#elif defined(HAS_TRIANGLES) || defined(TRACED_BOXES)
   rayQueryEXT q;
   uint flags = CELL_OPACITY_FLAGS | (anyHit ? gl_RayFlagsTerminateOnFirstHitEXT : 0u) |
                PRIMITIVE_CULLING_FLAGS;

@@ -48,7 +48,8 @@ struct ChartHit {
 
 ChartHit noChartHit() { return ChartHit(HIT_NONE, 0u, FAR, FAR, vec2(0.0)); }
 
-#if defined(CELL_CROSSING) || defined(MULTIPLE_CHARTS) || defined(SPHERE_LIST)
+#if defined(CELL_CROSSING) || defined(MULTIPLE_CHARTS) || defined(SPHERE_LIST) || \
+    defined(TRIANGLE_LIST)
 // A cell's record. In a space of one cell (SINGLE_CELL) every ray reads the same one, at an
 // index the compiler sees is the same for all: one load for a SIMD group, not a gather.
 Cell cellRecord(uint cell) {
@@ -59,6 +60,18 @@ Cell cellRecord(uint cell) {
 #endif
 }
 #endif
+
+// Whether the chart segment o + s d, 0 <= s <= sMax, meets the box [lo, hi] (a slab test).
+bool segmentMeetsBox(vec3 lo, vec3 hi, vec3 o, vec3 d, float sMax) {
+  vec3 inv = 1.0 / d;
+  vec3 a = (lo - o) * inv;
+  vec3 b = (hi - o) * inv;
+  vec3 near = min(a, b);
+  vec3 far = max(a, b);
+  float enter = max(max(near.x, near.y), max(near.z, 0.0));
+  float leave = min(min(far.x, far.y), min(far.z, sMax));
+  return enter <= leave;
+}
 
 // Model -> cell frame. Only S3's atlas changes charts between cells; other spaces have one
 // cell charted about the origin, so the identity compiles away there.

@@ -94,14 +94,7 @@ GeodesicRay crossFace(GeodesicRay ray, uint face, float t) {
 // beyond everything in it.
 bool meetsCellContent(uint cellIndex, vec3 o, vec3 d, float sMax) {
   Cell cell = cellRecord(cellIndex);
-  vec3 inv = 1.0 / d;
-  vec3 a = (cell.content_lo.xyz - o) * inv;
-  vec3 b = (cell.content_hi.xyz - o) * inv;
-  vec3 near = min(a, b);
-  vec3 far = max(a, b);
-  float enter = max(max(near.x, near.y), max(near.z, 0.0));
-  float leave = min(min(far.x, far.y), min(far.z, sMax));
-  return enter <= leave;
+  return segmentMeetsBox(cell.content_lo.xyz, cell.content_hi.xyz, o, d, sMax);
 }
 #endif
 

@@ -12,6 +12,7 @@ layout(local_size_x = 64) in;
 #include "common/sampling.glsl"
 #include "geometry/model.glsl"
 #include "geometry/capsule.glsl"
+#include "geometry/triangle.glsl"
 #include "common/gpu_types.h"
 #include "integrator/chart_ray.glsl"
 #include "primitives/shape_table.glsl"
@@ -38,6 +39,9 @@ struct ProbeCase {
   vec4 shapeB;
   vec4 shapeSize;  // x its size, y the tMax of its intersection
   uvec4 shapeKind; // x its kind
+  vec4 triangleA;  // a triangle's corners (xyz); triangleA.w the largest chart parameter sMax
+  vec4 triangleB;
+  vec4 triangleC;
 };
 
 struct ProbeResult {
@@ -78,6 +82,8 @@ struct ProbeResult {
                            // cosineSample): f, pdf
   vec4 shapeHit;           // intersectShape(shape, p, v, 0, tMax)
   vec4 shapeNormal;        // shapeNormal(shape, q)
+  vec4 triangle;           // intersectChartTriangle(shearLine(normal.xyz), chart.xyz, the
+                           // triangle, 0, sMax): s (FAR_TRIANGLE: none) and the barycentrics
 };
 
 // Diffuse, Phong (exponent 1 to 64) and mirror lobes in proportions the colour sets.
@@ -121,6 +127,11 @@ void main() {
   r.capsule = vec4(intersectCapsule(c.capsuleA.xyz, c.capsuleB.xyz, c.capsuleA.w, c.chart.xyz,
                                     c.normal.xyz, 0.0, c.capsuleB.w),
                    capsuleNormal(c.capsuleA.xyz, c.capsuleB.xyz, c.chart.xyz));
+
+  vec2 uv;
+  float s = intersectChartTriangle(shearLine(c.normal.xyz), c.chart.xyz, c.triangleA.xyz,
+                                   c.triangleB.xyz, c.triangleC.xyz, 0.0, c.triangleA.w, uv);
+  r.triangle = vec4(s, uv, 0.0);
 
   Shape shape = Shape(c.shapeA, c.shapeB, c.shapeSize.x, c.shapeKind.x, 0u, 0u);
   r.shapeHit = vec4(intersectShape(shape.kind, shape.a, shape.b, shape.size, p, v, 0.0,

@@ -43,8 +43,9 @@ struct ProbeCase {
   F4 capsule_a, capsule_b;  // a capsule (xyz, radius) and (xyz, sMax) for intersectCapsule
   F4 shape_a, shape_b, shape_size;  // a shape's vectors; (size, tMax) for intersectShape
   std::array<uint32_t, 4> shape_kind;  // x: its kind (shaders/common/shape_kinds.h)
+  F4 triangle_a, triangle_b, triangle_c;  // corners; triangle_a[3]: sMax (intersectChartTriangle)
 };
-static_assert(sizeof(ProbeCase) == 64 + 11 * 16 + 16 + 2 * 16 + 4 * 16);
+static_assert(sizeof(ProbeCase) == 64 + 11 * 16 + 16 + 2 * 16 + 4 * 16 + 3 * 16);
 
 struct ProbeResult {
   F4 scalars, chart_scalars, origin, geodesic, velocity, towards;
@@ -56,8 +57,9 @@ struct ProbeResult {
   std::array<uint32_t, 4> sobol, path_seeds;
   F4 bsdf;
   F4 shape_hit, shape_normal;  // intersectShape(shape, p, v, 0, tMax); shapeNormal(shape, q)
+  F4 triangle;  // intersectChartTriangle: s (kFar: none), u, v
 };
-static_assert(sizeof(ProbeResult) == 6 * 16 + 3 * 64 + 11 * 16 + 9 * 16 + 2 * 16);
+static_assert(sizeof(ProbeResult) == 6 * 16 + 3 * 64 + 11 * 16 + 9 * 16 + 3 * 16);
 
 constexpr double kUnitRoundoff = FLT_EPSILON / 2;
 constexpr float kFar = 1e30f;

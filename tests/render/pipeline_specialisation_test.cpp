@@ -39,6 +39,14 @@ Scene bundled(const std::string& name) {
   return small(load_scene_file(source_path("scenes/" + name + ".json")));
 }
 
+// The scene's pipeline feature `flag`, which its define `name` must say too.
+bool feature(const Scene& scene, bool PipelineFeatures::*flag, const char* name) {
+  const PipelineFeatures f = scene_features(scene, pack_scene(scene));
+  const auto defines = f.defines();
+  EXPECT_EQ(std::find(defines.begin(), defines.end(), name) != defines.end(), f.*flag) << name;
+  return f.*flag;
+}
+
 std::string read_text(const fs::path& path) {
   std::ifstream file(path, std::ios::binary);
   std::ostringstream text;
@@ -149,11 +157,7 @@ TEST(PipelineFeatures, SpacesOfOneCellReadItAtAUniformIndex) {
 // all-features pipeline traverses.)
 TEST(PipelineFeatures, SmallCellsOfSpheresAreTestedOneByOne) {
   const auto listed = [](const Scene& scene) {
-    const PipelineFeatures f = scene_features(scene, pack_scene(scene));
-    const auto defines = f.defines();
-    EXPECT_EQ(std::find(defines.begin(), defines.end(), "SPHERE_LIST") != defines.end(),
-              f.sphere_list);
-    return f.sphere_list;
+    return feature(scene, &PipelineFeatures::sphere_list, "SPHERE_LIST");
   };
   for (const char* name : {"mirrored-dodecahedron", "seifert-weber", "poincare-sphere"})
     EXPECT_TRUE(listed(bundled(name))) << name;
@@ -178,6 +182,38 @@ TEST(PipelineFeatures, SmallCellsOfSpheresAreTestedOneByOne) {
   EXPECT_FALSE(listed(torus(kSphereListLength + 1)));
 }
 
+// Segments test their cell's triangles one by one, and traverse nothing, where each cell holds
+// at most kTriangleListLength, its spheres are listed (or none) and there are no shapes.
+// (SpecialisedPipelines.EveryBundledSceneRendersAsWithAllFeatures holds the images: the
+// all-features pipeline traverses; TriangleProbe holds the test against its double twin.)
+TEST(PipelineFeatures, SmallCellsOfTrianglesAreTestedOneByOne) {
+  const auto listed = [](const Scene& scene) {
+    const PipelineFeatures f = scene_features(scene, pack_scene(scene));
+    EXPECT_TRUE(!f.triangle_list || !f.traced_boxes());  // nothing left to traverse
+    return feature(scene, &PipelineFeatures::triangle_list, "TRIANGLE_LIST");
+  };
+  for (const char* name : {"cornell-box", "furnace", "quarter-turn-space"})
+    EXPECT_TRUE(listed(bundled(name))) << name;
+  // No triangles; shapes, whose boxes the structure holds.
+  for (const char* name : {"mirrored-dodecahedron", "horospheres"})
+    EXPECT_FALSE(listed(bundled(name))) << name;
+  EXPECT_FALSE(all_features(GeometryKind::Euclidean).triangle_list);
+  // A box of n quads (2 n triangles): listed up to kTriangleListLength triangles.
+  const auto quads = [](uint32_t n) {
+    std::string objects;
+    for (uint32_t i = 0; i < n; ++i)
+      objects += std::string(i ? "," : "") +
+                 R"({"type": "quad", "material": "m", "corner": [-1, -1, )" +
+                 std::to_string(-1.0 + 0.05 * i) + R"(], "edge_u": [2, 0, 0], "edge_v": [0, 2, 0]})";
+    return scene_from_json(R"({"geometry": "euclidean",
+      "camera": {"position": [0, 0, 1.5], "look_at": [0, 0, 0]},
+      "materials": {"m": {"diffuse": 0.5}}, "objects": [)" + objects + R"(],
+      "lights": [{"type": "point", "position": [0, 1, 0], "intensity": 1}]})");
+  };
+  EXPECT_TRUE(listed(quads(kTriangleListLength / 2)));
+  EXPECT_FALSE(listed(quads(kTriangleListLength / 2 + 1)));
+}
+
 // Paths go on past their last bounce (UNSAMPLED_EMISSION) only where light sampling leaves
 // some emission out: area lights in a quotient of E3 or H3, whose images past the cutoff it
 // does not offer (torus-lamps; the cusps' skies). Not in a space without faces, nor in S3's
@@ -185,11 +221,7 @@ TEST(PipelineFeatures, SmallCellsOfSpheresAreTestedOneByOne) {
 // sampling never finds. Horospheres that glow are light sources.
 TEST(PipelineFeatures, PathsGoPastTheLastBounceOnlyForEmissionLightSamplingLeavesOut) {
   const auto past = [](const Scene& scene) {
-    const PipelineFeatures f = scene_features(scene, pack_scene(scene));
-    const auto defines = f.defines();
-    EXPECT_EQ(std::find(defines.begin(), defines.end(), "UNSAMPLED_EMISSION") != defines.end(),
-              f.unsampled_emission);
-    return f.unsampled_emission;
+    return feature(scene, &PipelineFeatures::unsampled_emission, "UNSAMPLED_EMISSION");
   };
   for (const char* name : {"torus-lamps", "figure-eight-knot", "whitehead-link"})
     EXPECT_TRUE(past(bundled(name))) << name;
@@ -209,13 +241,19 @@ TEST(PipelineFeatures, PathsGoPastTheLastBounceOnlyForEmissionLightSamplingLeave
 }
 
 TEST(PipelineFeatures, BuffersOnlyForWhatTheSceneHas) {
-  const Scene furnace = bundled("furnace");  // triangles, emitters, no spheres, no faces
+  // Triangles (12, listed: its one cell's record gives their range), emitters, no spheres, no
+  // faces.
+  const Scene furnace = bundled("furnace");
   const PipelineFeatures f = scene_features(furnace, pack_scene(furnace));
-  for (uint32_t unused : {kSpheresBinding, kSphereRefsBinding, kLightsBinding, kCellsBinding,
+  for (uint32_t unused : {kSpheresBinding, kSphereRefsBinding, kLightsBinding,
                           kCellFacesBinding, kNormalsBinding})
     EXPECT_FALSE(f.uses_binding(unused)) << unused;
-  for (uint32_t used : {kPositionsBinding, kTrianglesBinding, kEmittersBinding})
+  for (uint32_t used : {kPositionsBinding, kTrianglesBinding, kEmittersBinding, kCellsBinding})
     EXPECT_TRUE(f.uses_binding(used)) << used;
+  // Without the list, no cell record.
+  PipelineFeatures traversed = f;
+  traversed.triangle_list = false;
+  EXPECT_FALSE(traversed.uses_binding(kCellsBinding));
   EXPECT_EQ(all_features(GeometryKind::Euclidean).bindings().size(), size_t(kSceneBindingCount));
 }
 

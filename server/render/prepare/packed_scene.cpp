@@ -190,11 +190,11 @@ void order_spatially(uint32_t first, uint32_t first_ref, PackedScene& out) {
   permute(out.sphere_bounds, first_ref, 1, order);
 }
 
-// The chart box around what the cell's segments trace: its triangles, sphere refs and shape
-// refs (the ranges in `g`, the triangles last in `out`), padded by 1e-4 of the
-// coordinates beyond the boxes' own padding, so that the shader's float slab test never turns
-// away a segment that meets one of them. Empty (lo > hi) when the cell traces nothing.
-void set_content_box(const PackedScene& out, const CellGeometry& g, GpuCell& packed) {
+// The chart boxes around what the cell's segments trace (its triangles, sphere refs and shape
+// refs: the ranges in `g`, the triangles last in `out`) and around its triangles alone, padded
+// by 1e-4 of the coordinates beyond the boxes' own padding, so that the shader's float slab
+// test never turns away a segment that meets one of them. Empty (lo > hi) when there is none.
+void set_content_boxes(const PackedScene& out, const CellGeometry& g, GpuCell& packed) {
   ChartBox box{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
   const auto add = [&box](const Vec3& lo, const Vec3& hi) {
     box.lo = {std::min(box.lo.x, lo.x), std::min(box.lo.y, lo.y), std::min(box.lo.z, lo.z)};
@@ -205,15 +205,19 @@ void set_content_box(const PackedScene& out, const CellGeometry& g, GpuCell& pac
       add({boxes[i].min[0], boxes[i].min[1], boxes[i].min[2]},
           {boxes[i].max[0], boxes[i].max[1], boxes[i].max[2]});
   };
+  const auto write = [&box](std::array<float, 4>& lo, std::array<float, 4>& hi) {
+    const auto pad = [](double x) { return 1e-4 * (1 + std::abs(x)); };
+    for (int i = 0; i < 3; ++i) {
+      const bool empty = box.lo[i] > box.hi[i];
+      lo[i] = empty ? 1.0f : float(box.lo[i] - pad(box.lo[i]));
+      hi[i] = empty ? -1.0f : float(box.hi[i] + pad(box.hi[i]));
+    }
+  };
   for (const PrimitiveBox& t : triangle_boxes(out, g.first_triangle)) add(t.lo, t.hi);
+  write(packed.triangle_lo, packed.triangle_hi);
   add_aabbs(out.sphere_bounds, g.first_sphere_ref, g.sphere_ref_count);
   add_aabbs(out.shape_bounds, g.first_shape_ref, g.shape_ref_count);
-  const auto pad = [](double x) { return 1e-4 * (1 + std::abs(x)); };
-  for (int i = 0; i < 3; ++i) {
-    const bool empty = box.lo[i] > box.hi[i];
-    packed.content_lo[i] = empty ? 1.0f : float(box.lo[i] - pad(box.lo[i]));
-    packed.content_hi[i] = empty ? -1.0f : float(box.hi[i] + pad(box.hi[i]));
-  }
+  write(packed.content_lo, packed.content_hi);
 }
 
 }  // namespace
@@ -263,8 +267,10 @@ PackedScene pack_scene(const Scene& scene) {
     for (const CellFace& f : cell.faces)
       out.faces.push_back({to_float4(f.normal, f.delta), f.pairing.to_glsl(),
                            uint32_t(f.target_cell), uint32_t(f.partner), uint32_t(f.internal), 0});
-    GpuCell packed{cell.chart_isometry.to_glsl(), {}, {}, uint32_t(cell.face_begin),
-                   uint32_t(cell.faces.size()), 0, 0, 0, 0, 0, 0};
+    GpuCell packed{};
+    packed.chart_isometry = cell.chart_isometry.to_glsl();
+    packed.face_begin = uint32_t(cell.face_begin);
+    packed.face_count = uint32_t(cell.faces.size());
     pack_cell_tubes(scene, cell, packed, out);
     CellGeometry g;
     g.first_triangle = uint32_t(out.triangles.size());
@@ -277,9 +283,11 @@ PackedScene pack_scene(const Scene& scene) {
     pack_cell_shapes(scene, cell, c, out);
     g.shape_ref_count = uint32_t(out.shape_refs.size()) - g.first_shape_ref;
     order_spatially(g.first_triangle, g.first_sphere_ref, out);
-    set_content_box(out, g, packed);
+    set_content_boxes(out, g, packed);
     packed.sphere_begin = g.first_sphere_ref;
     packed.sphere_count = g.sphere_ref_count;
+    packed.triangle_begin = g.first_triangle;
+    packed.triangle_count = g.triangle_count;
     out.cells.push_back(packed);
     out.cell_geometry.push_back(g);
   }

@@ -86,6 +86,11 @@ PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
                   std::all_of(packed.cells.begin(), packed.cells.end(), [](const GpuCell& c) {
                     return c.sphere_count <= kSphereListLength;
                   });
+  f.triangle_list = f.triangles && !f.shapes && (!f.spheres || f.sphere_list) &&
+                    (f.crossing != Crossing::None || packed.cells.size() == 1) &&
+                    std::all_of(packed.cells.begin(), packed.cells.end(), [](const GpuCell& c) {
+                      return c.triangle_count <= kTriangleListLength;
+                    });
   f.single_cell = f.crossing != Crossing::None && packed.cells.size() == 1;
   f.smooth_normals = std::any_of(packed.triangles.begin(), packed.triangles.end(),
                                  [](const GpuTriangle& t) { return t.smooth_normals != 0; });
@@ -156,6 +161,7 @@ std::vector<std::string> PipelineFeatures::defines() const {
   flag(tubes && crossing != Crossing::None, "HAS_TUBES");
   flag(shapes, "HAS_SHAPES");
   flag(sphere_list, "SPHERE_LIST");
+  flag(triangle_list, "TRIANGLE_LIST");
   flag(single_cell, "SINGLE_CELL");
   flag(smooth_normals, "HAS_SMOOTH_NORMALS");
   flag(paper, "LIGHTING_PAPER");
@@ -191,7 +197,8 @@ std::vector<uint32_t> PipelineFeatures::bindings() const {
   add(tubes && crossing != Crossing::None, {kTubesBinding});
   add(shapes, {kShapesBinding, kShapeRefsBinding});
   add(paper && point_lights, {kLightsBinding});
-  add(crossing != Crossing::None || multiple_charts || sphere_list, {kCellsBinding});
+  add(crossing != Crossing::None || multiple_charts || sphere_list || triangle_list,
+      {kCellsBinding});
   add(crossing != Crossing::None, {kCellFacesBinding});
   add(light_sampling, {kEmittersBinding, kLightImagesBinding});
   std::sort(b.begin(), b.end());
@@ -217,6 +224,7 @@ std::string PipelineFeatures::summary() const {
   word(tubes, "tubes");
   word(shapes, "shapes");
   word(sphere_list, "sphere-list");
+  word(triangle_list, "triangle-list");
   word(single_cell, "one-cell");
   word(smooth_normals, "smooth-normals");
   word(true, paper ? "paper" : "physical");

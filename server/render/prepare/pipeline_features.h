@@ -27,6 +27,8 @@ enum class PipelineVariant { Specialised, AllFeatures };
 
 // The most spheres a cell may hold for its segments to test them one by one (sphere_list).
 constexpr uint32_t kSphereListLength = 8;
+// The most triangles a cell may hold for its segments to test them one by one (triangle_list).
+constexpr uint32_t kTriangleListLength = 32;
 
 struct PipelineFeatures {
   GeometryKind geometry = GeometryKind::Euclidean;
@@ -42,6 +44,13 @@ struct PipelineFeatures {
   // instance's, costs more than a few analytic tests (on lavapipe 7 % of a path in the
   // mirrored dodecahedron). Specialised pipelines only.
   bool sphere_list = false;
+  // Cells holding at most kTriangleListLength triangles each, their spheres listed (or none)
+  // and no shapes, under sphere_list's condition on the space: a segment tests its cell's
+  // triangles one by one too (those of a segment that meets their box) and nothing is
+  // traversed. On lavapipe a ray query costs about what 30-40 triangle tests do
+  // (docs/pipelines.md: the Cornell box's 16 triangles 1.12-1.33x the paths/s, 64 half).
+  // Specialised pipelines only.
+  bool triangle_list = false;
   // A space of one cell with faces (every quotient but S3's atlas): the cell's record and its
   // faces are read at indices the same for every ray (SINGLE_CELL), which a CPU device loads
   // once for a whole SIMD group instead of gathering them lane by lane (on lavapipe 7-18 % of

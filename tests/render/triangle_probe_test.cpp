@@ -1,0 +1,184 @@
+// The watertight triangle test in float GLSL (shaders/geometry/triangle.glsl, through the
+// geometry probe), which cells of a few triangles use instead of a traversal (TRIANGLE_LIST),
+// against its double twin (model::intersect_chart_triangle): lines at the inside, past an edge,
+// at grazing angles and a thousand units from the origin must hit or miss as the twin says
+// outside a band of 1e-4 of the triangle's size round its edges, at the twin's s and
+// barycentrics; and lines through an edge or a vertex that triangles share, in float, must meet
+// at least one of them (no light through the seams of a closed box).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <vector>
+
+#include "geometry_probe.h"
+
+namespace geodesic::test {
+namespace {
+
+using model::intersect_chart_triangle;
+
+struct Triangle {
+  Vec3 a, b, c;
+};
+
+void store(ProbeCase& c, const Triangle& t, const Vec3& o, const Vec3& d, double s_max) {
+  c.triangle_a = f4(t.a, s_max);
+  c.triangle_b = f4(t.b, 0);
+  c.triangle_c = f4(t.c, 0);
+  c.chart = f4(o, 0);
+  c.normal = f4(d, 0);
+}
+
+// The case as the probe sees it: every input rounded to float.
+struct Seen {
+  Triangle t;
+  Vec3 o, d;
+  double s_max;
+};
+Seen read_back(const ProbeCase& c) {
+  return {{v3(c.triangle_a), v3(c.triangle_b), v3(c.triangle_c)}, v3(c.chart), v3(c.normal),
+          c.triangle_a[3]};
+}
+
+Vec3 at(const Triangle& t, double u, double v) { return (1 - u - v) * t.a + u * t.b + v * t.c; }
+
+// The line's signed barycentrics on the triangle's plane, the smallest of them scaled by the
+// triangle's size: how far inside (> 0) or outside the line passes.
+double margin(const Seen& s) {
+  const Vec3 e1 = s.t.b - s.t.a, e2 = s.t.c - s.t.a, n = cross(e1, e2);
+  const double denom = dot(s.d, n);
+  if (denom == 0) return -1;
+  const Vec3 x = s.o + (dot(s.t.a - s.o, n) / denom) * s.d;
+  const double area2 = dot(n, n);
+  const double u = dot(cross(x - s.t.a, e2), n) / area2, v = dot(cross(e1, x - s.t.a), n) / area2;
+  return std::min({u, v, 1 - u - v});
+}
+
+TEST(TriangleProbe, FloatIntersectionMatchesTheDoubleTwin) {
+  ProbeCaseMaker maker(GeometryKind::Euclidean, 4111);  // the triangle lives in a chart
+  ModelSampler& sample = maker.sample();
+  std::vector<ProbeCase> cases;
+  for (int i = 0; i < 8000; ++i) {
+    ProbeCase c = maker.make();
+    // Every fourth case a thousand units out, as a chart of a large flat scene can be.
+    const Vec3 shift = i % 4 == 3 ? sample.uniform(100, 1000) * sample.unit3() : Vec3{};
+    const double size = sample.uniform(0.05, 2);
+    const Triangle t{shift + size * sample.ball(1), shift + size * sample.ball(1),
+                     shift + size * sample.ball(1)};
+    const Vec3 n = normalize(cross(t.b - t.a, t.c - t.a));
+    double u = sample.uniform(0, 1), v = sample.uniform(0, 1);
+    if (u + v > 1) u = 1 - u, v = 1 - v;
+    if (i % 4 == 1) {  // past an edge, by up to half the triangle
+      const double out = -sample.uniform(0.001, 0.5);
+      const int edge = i / 4 % 3;
+      if (edge == 0) u = out;
+      else if (edge == 1) v = out;
+      else u = 1 - v - out;
+    }
+    const Vec3 target = at(t, u, v);
+    Vec3 d = sample.unit3();
+    if (i % 4 == 2) {  // grazing: within 0.5 to 6 degrees of the plane
+      const Vec3 along = normalize(d - dot(d, n) * n);
+      d = normalize(along + std::tan(sample.uniform(0.01, 0.1)) * (i % 8 < 4 ? n : -n));
+    }
+    const double back = sample.uniform(0.1, 3) * (1 + size);
+    store(c, t, target - back * d, d, i % 16 == 4 ? 0.5 * back : kFar);
+    cases.push_back(c);
+  }
+  const auto results = run_probe(GeometryKind::Euclidean, cases);
+  int hits = 0, misses = 0, band = 0, cut = 0;
+  double worst_s = 0, worst_uv = 0;
+  for (size_t i = 0; i < cases.size(); ++i) {
+    const Seen s = read_back(cases[i]);
+    const auto twin = intersect_chart_triangle(s.o, s.d, s.t.a, s.t.b, s.t.c, 0, s.s_max);
+    const auto& g = results[i].triangle;
+    if (std::abs(margin(s)) < 1e-4) {
+      ++band;
+      continue;
+    }
+    if (!twin) {
+      misses++;
+      cut += margin(s) > 0;  // inside, but past sMax
+      EXPECT_GE(g[0], 1e29f) << "case " << i << ": float hit at " << g[0];
+      continue;
+    }
+    ++hits;
+    ASSERT_LT(g[0], 1e29f) << "case " << i << ": float miss, double hit at " << twin->s;
+    const Vec3 n = normalize(cross(s.t.b - s.t.a, s.t.c - s.t.a));
+    const double cosine = std::abs(dot(normalize(s.d), n));
+    const double error = std::abs(g[0] - twin->s) * cosine / (length(s.o) + twin->s + 1);
+    worst_s = std::max(worst_s, error);
+    EXPECT_LE(error, 1e-5) << "case " << i << ": float " << g[0] << ", double " << twin->s;
+    const double uv = std::max(std::abs(g[1] - twin->u), std::abs(g[2] - twin->v)) * cosine;
+    worst_uv = std::max(worst_uv, uv);
+    EXPECT_LE(uv, 1e-3) << "case " << i;
+  }
+  std::printf("triangle: %d hits, %d misses (%d inside but past sMax), %d in the edge band; "
+              "worst s error %.2e (|o| + s + 1) / cos, barycentrics %.2e / cos\n",
+              hits, misses, cut, band, worst_s, worst_uv);
+  EXPECT_GT(hits, 5000);
+  EXPECT_GT(misses, 2300);
+  EXPECT_GT(cut, 400);
+  EXPECT_LT(band, 200);
+}
+
+// Quads split along a diagonal and fans of triangles round a vertex, the lines aimed at float
+// points of the diagonal and at the vertex itself, near and far from the origin, head-on and
+// grazing: each line must meet at least one of the triangles, as a closed surface needs.
+TEST(TriangleProbe, LinesThroughSharedEdgesAndVerticesMeetATriangle) {
+  ProbeCaseMaker maker(GeometryKind::Euclidean, 4127);
+  ModelSampler& sample = maker.sample();
+  struct Line {
+    size_t first, count;  // its cases: one per triangle
+  };
+  std::vector<ProbeCase> cases;
+  std::vector<Line> lines;
+  for (int i = 0; i < 3000; ++i) {
+    const Vec3 shift = i % 3 == 2 ? sample.uniform(100, 1000) * sample.unit3() : Vec3{};
+    const double size = sample.uniform(0.05, 2);
+    const Vec3 centre = shift + size * sample.ball(1);
+    const Vec3 n = sample.unit3();
+    const Vec3 e1 = normalize(cross(n, sample.unit3())), e2 = cross(n, e1);
+    std::vector<Triangle> triangles;
+    Vec3 target;
+    if (i % 2 == 0) {  // a quad a b c d split along a c; aimed at a float point of a c
+      const Vec3 a = centre - size * e1, b = centre - size * e2, c = centre + size * e1,
+                 d = centre + size * e2;
+      triangles = {{a, b, c}, {a, c, d}};
+      const double f = sample.uniform(0.01, 0.99);
+      target = v3(f4(a + f * (c - a), 0));
+    } else {  // a fan of five round the vertex `centre`, aimed at it
+      for (int k = 0; k < 5; ++k) {
+        const double a0 = 2 * std::numbers::pi * k / 5, a1 = 2 * std::numbers::pi * (k + 1) / 5;
+        triangles.push_back({centre, centre + size * (std::cos(a0) * e1 + std::sin(a0) * e2),
+                             centre + size * (std::cos(a1) * e1 + std::sin(a1) * e2)});
+      }
+      target = v3(f4(centre, 0));
+    }
+    Vec3 d = sample.unit3();
+    if (i % 4 == 1) d = normalize(d - dot(d, n) * n + std::tan(sample.uniform(0.01, 0.1)) * n);
+    if (std::abs(dot(d, n)) < 1e-3) d = n;
+    const Vec3 o = target - sample.uniform(0.1, 3) * (1 + size) * d;
+    lines.push_back({cases.size(), triangles.size()});
+    for (const Triangle& t : triangles) {
+      ProbeCase c = maker.make();
+      store(c, t, o, d, kFar);
+      cases.push_back(c);
+    }
+  }
+  const auto results = run_probe(GeometryKind::Euclidean, cases);
+  int holes = 0, double_hits = 0;
+  for (size_t l = 0; l < lines.size(); ++l) {
+    int met = 0;
+    for (size_t k = 0; k < lines[l].count; ++k) met += results[lines[l].first + k].triangle[0] < 1e29f;
+    holes += met == 0;
+    double_hits += met > 1;
+    EXPECT_GT(met, 0) << "line " << l << " passes between its triangles";
+  }
+  std::printf("shared edges and vertices: %zu lines, %d through none, %d meeting two or more\n",
+              lines.size(), holes, double_hits);
+}
+
+}  // namespace
+}  // namespace geodesic::test
