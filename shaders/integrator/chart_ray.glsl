@@ -48,8 +48,7 @@ struct ChartHit {
 
 ChartHit noChartHit() { return ChartHit(HIT_NONE, 0u, FAR, FAR, vec2(0.0)); }
 
-#if defined(CELL_CROSSING) || defined(MULTIPLE_CHARTS) || defined(SPHERE_LIST) || \
-    defined(TRIANGLE_LIST)
+#if defined(READS_CELLS)
 // A cell's record. In a space of one cell (SINGLE_CELL) every ray reads the same one, at an
 // index the compiler sees is the same for all: one load for a SIMD group, not a gather.
 Cell cellRecord(uint cell) {

@@ -197,8 +197,7 @@ std::vector<uint32_t> PipelineFeatures::bindings() const {
   add(tubes && crossing != Crossing::None, {kTubesBinding});
   add(shapes, {kShapesBinding, kShapeRefsBinding});
   add(paper && point_lights, {kLightsBinding});
-  add(crossing != Crossing::None || multiple_charts || sphere_list || triangle_list,
-      {kCellsBinding});
+  add(reads_cells(), {kCellsBinding});
   add(crossing != Crossing::None, {kCellFacesBinding});
   add(light_sampling, {kEmittersBinding, kLightImagesBinding});
   std::sort(b.begin(), b.end());

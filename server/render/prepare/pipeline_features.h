@@ -86,6 +86,11 @@ struct PipelineFeatures {
   bool traced_spheres() const { return spheres && !(sphere_list && triangles); }
   // Boxes in the acceleration structure: spheres there, and shapes.
   bool traced_boxes() const { return traced_spheres() || shapes; }
+  // Whether segments read cell records (READS_CELLS in shaders/common/scene_data.glsl): to
+  // cross faces, to pick a cell's chart, or for the spheres and triangles a cell lists.
+  bool reads_cells() const {
+    return crossing != Crossing::None || multiple_charts || sphere_list || triangle_list;
+  }
 
   // The preprocessor defines, one "NAME" or "NAME=VALUE" each, in a fixed order.
   std::vector<std::string> defines() const;
