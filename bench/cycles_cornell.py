@@ -160,13 +160,16 @@ def timed_render(samples):
 
 
 # Marginal throughput: a 1-sample render measures scene sync and BVH build, which the
-# spp-sample render also pays; their difference is the time spent tracing paths.
+# spp-sample render also pays; their difference is the time spent tracing spp - 1 samples.
 setup = timed_render(1)
 if len(series) > 1 or os.path.isdir(out_path):
     for n in series:
         scene.render.filepath = os.path.join(out_path, f"cycles-{n}.exr")
         seconds = timed_render(n)
-        print(f"cycles-render: {n} {seconds - setup:.4f} {scene.render.filepath}")
+        # The time of all n samples, the one the 1-sample render held included: its image's
+        # error is that of n samples.
+        print(f"cycles-render: {n} {(seconds - setup) * n / max(n - 1, 1):.4f} "
+              f"{scene.render.filepath}")
     sys.exit(0)
 seconds = timed_render(spp)
 pixels = scene.render.resolution_x * scene.render.resolution_y

@@ -5,8 +5,9 @@
 # high-sample reference (another seed), the two references are compared (relMSE and mean
 # radiance per channel: they must agree, or the comparison is of different scenes), then each
 # renders the series of sample counts and its relMSE against its own reference, its seconds
-# (Cycles: without scene setup, as bench/cycles_cornell.py measures) and relMSE x seconds are
-# printed, with the ratio Geodesic / Cycles (below 1: Geodesic reaches an error sooner).
+# (Cycles: the n samples' time without scene setup, as bench/cycles_cornell.py measures) and
+# relMSE x seconds are printed, with the ratio Geodesic / Cycles (below 1: Geodesic reaches an
+# error sooner).
 # relMSE = mean over pixels and channels of (x - r)^2 / (r^2 + 0.01) (bench/image_error.cpp).
 #   bash bench/error_per_second.sh [SCENE.json] [--spp 16,64,256] [--ref-spp 4096]
 # Installs Debian's blender package if it is missing; expects the build of bench/run.sh.
