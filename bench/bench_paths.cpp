@@ -31,7 +31,9 @@ struct Measurement {
 };
 
 // Best of `repeat` timed runs (after a warm-up sample that also compiles the pipeline): the
-// least-disturbed run is the fairest figure on a shared 2-core machine.
+// least-disturbed run is the fairest figure on a shared 2-core machine. A run is one dispatch
+// of all its samples, as the service's slices hold many: a dispatch per sample measured a GPU's
+// submissions (the Cornell box on an H200: 0.3 ms of work behind each), not its paths.
 Measurement measure(VulkanContext& ctx, const Scene& scene, BackendKind backend, uint32_t spp,
                     int repeat) {
   Renderer renderer(ctx, scene, backend);
@@ -40,7 +42,7 @@ Measurement measure(VulkanContext& ctx, const Scene& scene, BackendKind backend,
   for (int r = 0; r < repeat; ++r) {
     renderer.reset();
     const auto start = std::chrono::steady_clock::now();
-    for (uint32_t s = 0; s < spp; ++s) renderer.add_samples(1);
+    renderer.add_samples(spp);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double paths = double(spp) * scene.render.width * scene.render.height;
