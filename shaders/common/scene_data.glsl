@@ -53,11 +53,9 @@ layout(set = 0, binding = BINDING_NORMALS, std430)  // E3
 #if defined(LIGHTING_PAPER) && defined(HAS_POINT_LIGHTS)
 layout(set = 0, binding = BINDING_LIGHTS, std430) readonly buffer Lights { PointLight lights[]; };
 #endif
-// Whether segments read cell records: to cross faces, to pick a cell's chart, or for the
-// spheres and triangles a cell lists (PipelineFeatures::reads_cells on the host).
-#if defined(CELL_CROSSING) || defined(MULTIPLE_CHARTS) || defined(SPHERE_LIST) || \
-    defined(TRIANGLE_LIST)
-#define READS_CELLS
+// READS_CELLS: segments read cell records, to cross faces, to pick a cell's chart, or for the
+// spheres and triangles a cell lists (defined by the host: PipelineFeatures::reads_cells).
+#if defined(READS_CELLS)
 layout(set = 0, binding = BINDING_CELLS, std430) readonly buffer Cells { Cell cells[]; };
 #endif
 #if defined(CELL_CROSSING)

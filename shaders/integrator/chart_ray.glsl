@@ -5,11 +5,9 @@
 
 const float FAR = 1e30;
 
-// Boxes in the acceleration structure: shapes, and spheres unless each cell's are listed and
-// tested one by one beside a traversal of its triangles (PipelineFeatures::traced_boxes).
-#if defined(HAS_SHAPES) || (defined(HAS_SPHERES) && !(defined(SPHERE_LIST) && defined(HAS_TRIANGLES)))
-#define TRACED_BOXES
-#endif
+// TRACED_BOXES: boxes in the acceleration structure, shapes, and spheres unless each cell's
+// are listed and tested one by one beside its triangles (defined by the host:
+// PipelineFeatures::traced_boxes).
 
 // Traversal skips the primitive type it never meets, where the device allows it: boxes or
 // triangles.

@@ -177,6 +177,8 @@ std::vector<std::string> PipelineFeatures::defines() const {
        "CULL_PRIMITIVES");
   flag(shared_cell_masks, "SHARED_CELL_MASKS");
   flag(internal_walls, "INTERNAL_WALLS");
+  flag(reads_cells(), "READS_CELLS");
+  flag(traced_boxes(), "TRACED_BOXES");
   if (variant == PipelineVariant::Specialised) {
     d.push_back("POINT_LIGHT_COUNT=" + std::to_string(point_light_count) + "u");
     d.push_back("EMITTER_COUNT=" + std::to_string(emitter_count) + "u");

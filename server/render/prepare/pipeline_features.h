@@ -84,10 +84,11 @@ struct PipelineFeatures {
   // Spheres in the acceleration structure, as boxes: unless listed beside triangles (without
   // triangles nothing is traversed, and their boxes keep the structure from being empty).
   bool traced_spheres() const { return spheres && !(sphere_list && triangles); }
-  // Boxes in the acceleration structure: spheres there, and shapes.
+  // Boxes in the acceleration structure: spheres there, and shapes (the define TRACED_BOXES).
   bool traced_boxes() const { return traced_spheres() || shapes; }
-  // Whether segments read cell records (READS_CELLS in shaders/common/scene_data.glsl): to
-  // cross faces, to pick a cell's chart, or for the spheres and triangles a cell lists.
+  // Whether segments read cell records (the define READS_CELLS, which declares the cell
+  // buffer in shaders/common/scene_data.glsl): to cross faces, to pick a cell's chart, or for
+  // the spheres and triangles a cell lists.
   bool reads_cells() const {
     return crossing != Crossing::None || multiple_charts || sphere_list || triangle_list;
   }
