@@ -66,10 +66,8 @@ for ((r = 1; r <= rounds; ++r)); do
 done
 if [ "$rounds" -gt 1 ]; then
   for n in ${series//,/ }; do
+    format="$(printf '%6d' "$n") spp: relMSE x s, geodesic / cycles, median %.2fx (%.2f-%.2f)"
     awk -v n="$n" '$2 == n { sub("x", "", $NF); print $NF }' "$out/rows.txt" | sort -g |
-      awk -v n="$n" '{ v[NR] = $1 } END {
-        m = NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2
-        printf "%6d spp: relMSE x s, geodesic / cycles, median %.2fx (%.2f-%.2f) over %d rounds\n",
-               n, m, v[1], v[NR], NR }'
+      awk -v format="$format over %d rounds\n" -f bench/median_range.awk
   done
 fi

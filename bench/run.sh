@@ -60,9 +60,7 @@ printf '\n%-6s %28s %28s\n' "round" "full depth: geo / cyc M p/s" "roulette: geo
 awk '{ printf "%-6d %9.3f / %7.3f = %5.2fx %9.3f / %7.3f = %5.2fx\n", $1, $2, $3, $2 / $3,
        $4, $5, $4 / $5 }' "$table"
 # The median and range of each mode's per-round ratio.
-summary() { sort -g | awk '{ v[NR] = $1 } END {
-  m = NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2
-  printf "%.2fx (%.2f-%.2f)", m, v[1], v[NR] }'; }
+summary() { sort -g | awk -v format='%.2fx (%.2f-%.2f)' -f bench/median_range.awk; }
 printf '%-28s full depth %s, roulette %s\n' "geodesic / cycles, median" \
   "$(awk '{ print $2 / $3 }' "$table" | summary)" "$(awk '{ print $4 / $5 }' "$table" | summary)"
 echo
