@@ -10,6 +10,7 @@
 
 #include "geometry/moebius.h"
 #include "scene/moebius_text.h"
+#include "scene/preparation_budget.h"
 #include "scene/scene.h"
 
 namespace geodesic {
@@ -99,7 +100,7 @@ std::vector<RawMatrix> read_gen(std::string_view text, const std::string& source
   std::istringstream in{std::string(text)};
   std::string line;
   while (std::getline(in, line)) {
-    ++line_no;
+    if (++line_no % 256 == 0) check_preparation_budget();
     std::istringstream fields(line);
     std::vector<std::string> row;
     for (std::string f; fields >> f;) row.push_back(f);
@@ -119,7 +120,8 @@ std::vector<RawMatrix> read_snappy(std::string_view text, const std::string& sou
   std::vector<double> values;
   std::vector<int> lines;
   int line_no = 1;
-  for (std::size_t i = 0; i < text.size();) {
+  for (std::size_t i = 0, steps = 1; i < text.size(); ++steps) {
+    if (steps % 4096 == 0) check_preparation_budget();
     const char c = text[i];
     const bool starts_number =
         std::isdigit(static_cast<unsigned char>(c)) ||
@@ -187,6 +189,7 @@ GeneratorSet classify(const std::vector<RawMatrix>& raw, const std::string& sour
     throw SceneError(source + ": no matrices (a quotient needs at least one generator)");
   unsigned common = 7;
   for (std::size_t i = 0; i < raw.size(); ++i) {
+    if (i % 256 == 255) check_preparation_budget();
     const unsigned mine = models_of(raw[i].m);
     if (!mine)
       fail(source, i, raw[i].line,

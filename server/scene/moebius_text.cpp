@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <optional>
 
+#include "scene/preparation_budget.h"
 #include "scene/scene.h"
 
 namespace geodesic {
@@ -32,7 +33,8 @@ class Scanner {
   std::vector<Token> tokens() {
     std::vector<Token> out;
     bool space = false;
-    while (i_ < text_.size()) {
+    for (unsigned steps = 1; i_ < text_.size(); ++steps) {
+      if (steps % 4096 == 0) check_preparation_budget();
       const char c = text_[i_];
       if (c == '\n') ++line_;
       if (c == '[' || c == ']') {

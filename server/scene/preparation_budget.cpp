@@ -28,12 +28,15 @@ void check_preparation_budget() {
   const PreparationScope* scope = current;
   if (!scope) return;
   if (scope->cancelled_ && scope->cancelled_->load(std::memory_order_relaxed))
-    throw SceneError("generators: the group enumeration was cancelled (the server is stopping)");
+    throw SceneError(
+        "generators: reading the generators and enumerating their group was cancelled (the "
+        "server is stopping)");
   if (std::chrono::steady_clock::now() > scope->deadline_) {
     char seconds[32];
     std::snprintf(seconds, sizeof seconds, "%g", scope->seconds_);
-    throw SceneError(std::string("generators: the group enumeration exceeded ") + seconds +
-                     " s (the server's time budget for preparing a scene)");
+    throw SceneError(
+        std::string("generators: reading the generators and enumerating their group exceeded ") +
+        seconds + " s (the server's time budget for preparing a scene)");
   }
 }
 

@@ -1,9 +1,9 @@
-// The time budget and cancellation of expensive scene preparation (group enumeration, Dirichlet
-// domains) on the calling thread. A daemon worker opens a PreparationScope around the work; the
-// loops that can run long call check_preparation_budget() now and then, which throws SceneError
-// ("generators: the group enumeration exceeded N s") once the budget is spent, or when the
-// scope's cancel flag is set (the server is stopping). Without a scope (the command line, tests)
-// nothing is checked.
+// The time budget and cancellation of expensive scene preparation (reading a generator text,
+// group enumeration, Dirichlet domains) on the calling thread. A daemon worker opens a
+// PreparationScope around the work; the loops that can run long call check_preparation_budget()
+// now and then, which throws SceneError ("generators: reading the generators and enumerating
+// their group exceeded N s") once the budget is spent, or when the scope's cancel flag is set
+// (the server is stopping). Without a scope (the command line, tests) nothing is checked.
 #pragma once
 
 #include <atomic>

@@ -89,8 +89,8 @@ TEST(DaemonStall, HostileGeneratorsStallNeitherHealthNorFrames) {
     // gets there within the budget (a fast or idle machine), the honest answer is the slab's;
     // otherwise the budget's (EnumerationBudget.* hold that one deterministically).
     const std::string error = r.json.value("error", "");
-    EXPECT_TRUE(error == "generators: the group enumeration exceeded 3 s (the server's time "
-                         "budget for preparing a scene)" ||
+    EXPECT_TRUE(error == "generators: reading the generators and enumerating their group "
+                         "exceeded 3 s (the server's time budget for preparing a scene)" ||
                 error == "generators: the Dirichlet domain is unbounded: the quotient of "
                          "euclidean space by these generators is not compact (they are "
                          "translations spanning only a line)")
