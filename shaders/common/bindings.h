@@ -25,6 +25,7 @@
 #define BINDING_TUBES 17
 #define BINDING_SHAPES 18
 #define BINDING_SHAPE_REFS 19
-#define BINDING_COUNT 20
+#define BINDING_LISTED 20        // the primitives of the cells that list their triangles
+#define BINDING_COUNT 21
 
 #endif

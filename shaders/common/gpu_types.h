@@ -133,11 +133,21 @@ struct Cell {
   // Its sphere refs, sphere refs [sphere_begin, sphere_begin + sphere_count) (SPHERE_LIST).
   uint sphere_begin;
   uint sphere_count;
-  // Its triangles, triangles [triangle_begin, triangle_begin + triangle_count) (TRIANGLE_LIST).
-  uint triangle_begin;
-  uint triangle_count;
+  // Its triangles as listed, listed [listed_begin, listed_begin + listed_count) (TRIANGLE_LIST;
+  // none where the cell holds more than the list's limit).
+  uint listed_begin;
+  uint listed_count;
+  uint listed_pairs;  // the first listed_pairs of them are parallelograms, the rest triangles
   uint pad0;
-  uint pad1;
+};
+
+// What a segment of a cell that lists its triangles tests (TRIANGLE_LIST,
+// server/render/prepare/triangle_list.h): a lone triangle (second = ~0u), by the watertight
+// triangle test, or the parallelogram that two of the cell's triangles make, (a, b, c) and
+// (a, c, d) with d = a + c - b, as one (geometry/parallelogram.glsl).
+struct ListedPrimitive {
+  uint triangle;  // the lone triangle, or the pair's first (a, b, c)
+  uint second;    // the pair's second (a, c, d); ~0u for a lone triangle
 };
 
 // An edge tube: a capsule in its cell's chart (geometry/capsule.h, scene.h EdgeTube) and two

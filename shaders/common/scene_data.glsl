@@ -46,6 +46,10 @@ layout(set = 0, binding = BINDING_INDICES, std430) readonly buffer Indices { uin
 layout(set = 0, binding = BINDING_TRIANGLES, std430)
     readonly buffer Triangles { TriangleInfo triangles[]; };
 #endif
+#if defined(TRIANGLE_LIST)
+layout(set = 0, binding = BINDING_LISTED, std430)
+    readonly buffer Listed { ListedPrimitive listed[]; };
+#endif
 #if defined(HAS_SMOOTH_NORMALS)
 layout(set = 0, binding = BINDING_NORMALS, std430)  // E3
     readonly buffer Normals { vec4 normals[]; };

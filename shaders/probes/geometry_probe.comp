@@ -12,6 +12,7 @@ layout(local_size_x = 64) in;
 #include "common/sampling.glsl"
 #include "geometry/model.glsl"
 #include "geometry/capsule.glsl"
+#include "geometry/parallelogram.glsl"
 #include "geometry/triangle.glsl"
 #include "common/gpu_types.h"
 #include "integrator/chart_ray.glsl"
@@ -84,6 +85,8 @@ struct ProbeResult {
   vec4 shapeNormal;        // shapeNormal(shape, q)
   vec4 triangle;           // intersectChartTriangle(shearLine(normal.xyz), chart.xyz, the
                            // triangle, 0, sMax): s (FAR_TRIANGLE: none) and the barycentrics
+  vec4 parallelogram;      // intersectChartParallelogram(chart.xyz, normal.xyz, |chart|, the
+                           // triangle's corners as a, b, c, 0, sMax): s, alpha, beta
 };
 
 // Diffuse, Phong (exponent 1 to 64) and mirror lobes in proportions the colour sets.
@@ -132,6 +135,12 @@ void main() {
   float s = intersectChartTriangle(shearLine(c.normal.xyz), c.chart.xyz, c.triangleA.xyz,
                                    c.triangleB.xyz, c.triangleC.xyz, 0.0, c.triangleA.w, uv);
   r.triangle = vec4(s, uv, 0.0);
+  vec3 o = c.chart.xyz;
+  vec2 alphaBeta;
+  float sp = intersectChartParallelogram(o, c.normal.xyz, max(max(abs(o.x), abs(o.y)), abs(o.z)),
+                                         c.triangleA.xyz, c.triangleB.xyz, c.triangleC.xyz, 0.0,
+                                         c.triangleA.w, alphaBeta);
+  r.parallelogram = vec4(sp, alphaBeta, 0.0);
 
   Shape shape = Shape(c.shapeA, c.shapeB, c.shapeSize.x, c.shapeKind.x, 0u, 0u);
   r.shapeHit = vec4(intersectShape(shape.kind, shape.a, shape.b, shape.size, p, v, 0.0,

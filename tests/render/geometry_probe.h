@@ -58,11 +58,34 @@ struct ProbeResult {
   F4 bsdf;
   F4 shape_hit, shape_normal;  // intersectShape(shape, p, v, 0, tMax); shapeNormal(shape, q)
   F4 triangle;  // intersectChartTriangle: s (kFar: none), u, v
+  F4 parallelogram;  // intersectChartParallelogram on the triangle's corners: s (kFar), alpha, beta
 };
-static_assert(sizeof(ProbeResult) == 6 * 16 + 3 * 64 + 11 * 16 + 9 * 16 + 3 * 16);
+static_assert(sizeof(ProbeResult) == 6 * 16 + 3 * 64 + 11 * 16 + 9 * 16 + 4 * 16);
 
 constexpr double kUnitRoundoff = FLT_EPSILON / 2;
 constexpr float kFar = 1e30f;
+
+// Lines through an edge or a vertex that pieces of a surface share (triangles, parallelograms):
+// a line's cases, one per piece, are results[first, first + count); each line must meet at
+// least one piece (field[0] < kFar), as a closed surface needs. Prints the counts under `what`.
+struct SeamLine {
+  size_t first, count;
+};
+inline void expect_every_line_meets_a_piece(const std::vector<ProbeResult>& results,
+                                            const std::vector<SeamLine>& lines,
+                                            F4 ProbeResult::*field, const char* what) {
+  int holes = 0, double_hits = 0;
+  for (size_t l = 0; l < lines.size(); ++l) {
+    int met = 0;
+    for (size_t k = 0; k < lines[l].count; ++k)
+      met += (results[lines[l].first + k].*field)[0] < 1e29f;
+    holes += met == 0;
+    double_hits += met > 1;
+    EXPECT_GT(met, 0) << "line " << l << " passes between its pieces";
+  }
+  std::printf("%s: %zu lines, %d through none, %d meeting two or more\n", what, lines.size(),
+              holes, double_hits);
+}
 
 inline std::vector<ProbeResult> run_probe(GeometryKind k, const std::vector<ProbeCase>& cases) {
   ProbeRunner runner(device(), "probes/geometry_probe.comp", k);

@@ -248,13 +248,18 @@ TEST(PipelineFeatures, BuffersOnlyForWhatTheSceneHas) {
   for (uint32_t unused : {kSpheresBinding, kSphereRefsBinding, kLightsBinding,
                           kCellFacesBinding, kNormalsBinding})
     EXPECT_FALSE(f.uses_binding(unused)) << unused;
-  for (uint32_t used : {kPositionsBinding, kTrianglesBinding, kEmittersBinding, kCellsBinding})
+  for (uint32_t used : {kPositionsBinding, kTrianglesBinding, kEmittersBinding, kCellsBinding,
+                        kListedBinding})
     EXPECT_TRUE(f.uses_binding(used)) << used;
-  // Without the list, no cell record.
+  // Without the list, no cell record and no listed primitives.
   PipelineFeatures traversed = f;
   traversed.triangle_list = false;
   EXPECT_FALSE(traversed.uses_binding(kCellsBinding));
-  EXPECT_EQ(all_features(GeometryKind::Euclidean).bindings().size(), size_t(kSceneBindingCount));
+  EXPECT_FALSE(traversed.uses_binding(kListedBinding));
+  // The all-features pipeline traverses: every binding but the list's.
+  EXPECT_EQ(all_features(GeometryKind::Euclidean).bindings().size(),
+            size_t(kSceneBindingCount) - 1);
+  EXPECT_FALSE(all_features(GeometryKind::Euclidean).uses_binding(kListedBinding));
 }
 
 TEST(DumpedShaders, EuclideanSceneCarriesNoHyperbolicOrSphericalCode) {

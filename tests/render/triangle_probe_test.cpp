@@ -129,11 +129,8 @@ TEST(TriangleProbe, FloatIntersectionMatchesTheDoubleTwin) {
 TEST(TriangleProbe, LinesThroughSharedEdgesAndVerticesMeetATriangle) {
   ProbeCaseMaker maker(GeometryKind::Euclidean, 4127);
   ModelSampler& sample = maker.sample();
-  struct Line {
-    size_t first, count;  // its cases: one per triangle
-  };
   std::vector<ProbeCase> cases;
-  std::vector<Line> lines;
+  std::vector<SeamLine> lines;
   for (int i = 0; i < 3000; ++i) {
     const Vec3 shift = i % 3 == 2 ? sample.uniform(100, 1000) * sample.unit3() : Vec3{};
     const double size = sample.uniform(0.05, 2);
@@ -167,17 +164,8 @@ TEST(TriangleProbe, LinesThroughSharedEdgesAndVerticesMeetATriangle) {
       cases.push_back(c);
     }
   }
-  const auto results = run_probe(GeometryKind::Euclidean, cases);
-  int holes = 0, double_hits = 0;
-  for (size_t l = 0; l < lines.size(); ++l) {
-    int met = 0;
-    for (size_t k = 0; k < lines[l].count; ++k) met += results[lines[l].first + k].triangle[0] < 1e29f;
-    holes += met == 0;
-    double_hits += met > 1;
-    EXPECT_GT(met, 0) << "line " << l << " passes between its triangles";
-  }
-  std::printf("shared edges and vertices: %zu lines, %d through none, %d meeting two or more\n",
-              lines.size(), holes, double_hits);
+  expect_every_line_meets_a_piece(run_probe(GeometryKind::Euclidean, cases), lines,
+                                  &ProbeResult::triangle, "shared edges and vertices");
 }
 
 }  // namespace

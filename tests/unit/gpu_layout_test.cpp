@@ -20,6 +20,7 @@
 #include "render/prepare/pipeline_features.h"
 #include "render/prepare/scene_bindings.h"
 #include "render/prepare/shader_compiler.h"
+#include "render/prepare/triangle_list.h"
 
 namespace geodesic::test {
 namespace {
@@ -100,6 +101,17 @@ const SpirvLayout& shader_layout() {
   return layout;
 }
 
+// A pipeline that lists its cells' triangles (which the all-features one traverses).
+const SpirvLayout& listing_layout() {
+  static const SpirvLayout layout = [] {
+    PipelineFeatures f = all_features(GeometryKind::Euclidean);
+    f.shapes = false;
+    f.sphere_list = f.triangle_list = true;
+    return read_layout(compile_shader("entry/ray_query.comp", f.defines()).spirv);
+  }();
+  return layout;
+}
+
 #define AT(T, m) Member{uint32_t(offsetof(T, m)), gpu_type<decltype(T::m)>()}
 
 TEST(GpuLayout, EveryHostStructHasItsShaderStructsOffsetsAndStride) {
@@ -145,8 +157,8 @@ TEST(GpuLayout, EveryHostStructHasItsShaderStructsOffsetsAndStride) {
         AT(GpuCell, face_begin), AT(GpuCell, face_count),
         AT(GpuCell, tube_begin), AT(GpuCell, tube_count), AT(GpuCell, tube_reach),
         AT(GpuCell, always_begin), AT(GpuCell, sphere_begin), AT(GpuCell, sphere_count),
-        AT(GpuCell, triangle_begin), AT(GpuCell, triangle_count), AT(GpuCell, pad0),
-        AT(GpuCell, pad1)},
+        AT(GpuCell, listed_begin), AT(GpuCell, listed_count), AT(GpuCell, listed_pairs),
+        AT(GpuCell, pad0)},
        sizeof(GpuCell)},
       {"Tube",
        {AT(GpuTube, a), AT(GpuTube, b), AT(GpuTube, material), AT(GpuTube, face_a),
@@ -166,6 +178,12 @@ TEST(GpuLayout, EveryHostStructHasItsShaderStructsOffsetsAndStride) {
     ASSERT_TRUE(shader.strides.count(e.glsl)) << "no array of it in a buffer";
     EXPECT_EQ(shader.strides.at(e.glsl), e.size);
   }
+  const SpirvLayout& listing = listing_layout();
+  ASSERT_TRUE(listing.structs.count("ListedPrimitive"));
+  EXPECT_EQ(listing.structs.at("ListedPrimitive"),
+            (std::vector<Member>{AT(GpuListedPrimitive, triangle),
+                                 AT(GpuListedPrimitive, second)}));
+  EXPECT_EQ(listing.strides.at("ListedPrimitive"), sizeof(GpuListedPrimitive));
   // The uniform block (std140) and the push constants.
   EXPECT_EQ(shader.structs.at("FrameUniforms"),
             (std::vector<Member>{
@@ -195,10 +213,10 @@ TEST(GpuLayout, EveryBindingHoldsTheBlockTheHostBindsThere) {
       {kDiagnosticsBinding, "Diagnostics"},   {kEmittersBinding, "Emitters"},
       {kLightImagesBinding, "LightImages"},   {kTubesBinding, "Tubes"},
       {kShapesBinding, "Shapes"},             {kShapeRefsBinding, "ShapeRefs"},
-      {kNormalsBinding, "Normals"}};
+      {kNormalsBinding, "Normals"},           {kListedBinding, "Listed"}};
   const SpirvLayout& shader = shader_layout();
   for (const auto& [binding, block] : expected) {
-    if (binding == kNormalsBinding) continue;  // E3 only: checked below
+    if (binding == kNormalsBinding || binding == kListedBinding) continue;  // checked below
     EXPECT_EQ(shader.blocks.count(binding) ? shader.blocks.at(binding) : "(none)", block)
         << "binding " << binding;
   }
@@ -207,6 +225,10 @@ TEST(GpuLayout, EveryBindingHoldsTheBlockTheHostBindsThere) {
       read_layout(compile_shader("entry/ray_query.comp", euclidean.defines()).spirv);
   EXPECT_EQ(e3.blocks.count(kNormalsBinding) ? e3.blocks.at(kNormalsBinding) : "(none)",
             "Normals");
+  EXPECT_EQ(listing_layout().blocks.count(kListedBinding)
+                ? listing_layout().blocks.at(kListedBinding)
+                : "(none)",
+            "Listed");
   // Every binding the host numbers is one of these, and one more is the scene's acceleration
   // structure (binding 0, which has no block).
   EXPECT_EQ(expected.size() + 1, size_t(kSceneBindingCount));

@@ -77,6 +77,7 @@ SceneResources::SceneResources(VulkanContext& ctx, const Scene& scene, PipelineV
   upload(kTubesBinding, tubes_, packed_.tubes);
   upload(kShapesBinding, shapes_, packed_.shapes);
   upload(kShapeRefsBinding, shape_refs_, packed_.shape_refs);
+  upload(kListedBinding, listed_, packed_.listed);
   diagnostics_ = GpuBuffer(ctx, sizeof(DeviceDiagnostics), kStorage);
   std::memset(diagnostics_.mapped(), 0, sizeof(DeviceDiagnostics));
   create_descriptors();
@@ -166,7 +167,7 @@ void SceneResources::create_descriptors() {
       nullptr,     &accumulation_, &frame_,     &spheres_,     &materials_,   &lights_,
       &positions_, &normals_,      &indices_,   &triangles_,   &ray_counts_,  &sphere_refs_,
       &cells_,     &faces_,        &diagnostics_, &emitters_,  &light_images_, &tubes_,
-      &shapes_,    &shape_refs_};
+      &shapes_,    &shape_refs_,   &listed_};
   std::vector<VkDescriptorBufferInfo> infos(count);
   std::vector<VkWriteDescriptorSet> writes(count);
   for (uint32_t i = 0; i < count; ++i) {

@@ -77,7 +77,7 @@ class SceneResources {
   SceneAccelerationStructures structures_;
   GpuBuffer frame_, accumulation_, spheres_, materials_, lights_, positions_, normals_,
       indices_, triangles_, ray_counts_, sphere_refs_, cells_, faces_, diagnostics_, emitters_,
-      light_images_, tubes_, shapes_, shape_refs_;
+      light_images_, tubes_, shapes_, shape_refs_, listed_;
   std::unique_ptr<SceneLayout> layout_;
   VkDescriptorPool pool_ = VK_NULL_HANDLE;
   VkDescriptorSet set_ = VK_NULL_HANDLE;

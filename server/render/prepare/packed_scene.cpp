@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "geometry/chart_bounds.h"
+#include "render/prepare/triangle_list.h"
 #include "render/prepare/tube_culling.h"
 #include "scene/shape.h"
 
@@ -284,10 +285,11 @@ PackedScene pack_scene(const Scene& scene) {
     g.shape_ref_count = uint32_t(out.shape_refs.size()) - g.first_shape_ref;
     order_spatially(g.first_triangle, g.first_sphere_ref, out);
     set_content_boxes(out, g, packed);
+    packed.listed_begin = uint32_t(out.listed.size());
+    packed.listed_pairs = list_cell_triangles(g.first_triangle, g.triangle_count, out);
+    packed.listed_count = uint32_t(out.listed.size()) - packed.listed_begin;
     packed.sphere_begin = g.first_sphere_ref;
     packed.sphere_count = g.sphere_ref_count;
-    packed.triangle_begin = g.first_triangle;
-    packed.triangle_count = g.triangle_count;
     out.cells.push_back(packed);
     out.cell_geometry.push_back(g);
   }

@@ -63,6 +63,7 @@ struct PackedScene {
   std::vector<Float4> normals;              // one per position (zero when flat)
   std::vector<uint32_t> indices;            // three per triangle, into positions
   std::vector<GpuTriangle> triangles;       // grouped by cell
+  std::vector<gpu::ListedPrimitive> listed;  // grouped by cell (render/prepare/triangle_list.h)
   std::vector<GpuTube> tubes;               // grouped by cell (GpuCell ranges)
   uint32_t camera_cell = 0;
   Mat4 camera_pose;                         // carried into its cell

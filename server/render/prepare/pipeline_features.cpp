@@ -88,9 +88,10 @@ PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
                   });
   f.triangle_list = f.triangles && !f.shapes && (!f.spheres || f.sphere_list) &&
                     (f.crossing != Crossing::None || packed.cells.size() == 1) &&
-                    std::all_of(packed.cells.begin(), packed.cells.end(), [](const GpuCell& c) {
-                      return c.triangle_count <= kTriangleListLength;
-                    });
+                    std::all_of(packed.cell_geometry.begin(), packed.cell_geometry.end(),
+                                [](const CellGeometry& g) {
+                                  return g.triangle_count <= kTriangleListLength;
+                                });
   f.single_cell = f.crossing != Crossing::None && packed.cells.size() == 1;
   f.smooth_normals = std::any_of(packed.triangles.begin(), packed.triangles.end(),
                                  [](const GpuTriangle& t) { return t.smooth_normals != 0; });
@@ -198,6 +199,7 @@ std::vector<uint32_t> PipelineFeatures::bindings() const {
   add(smooth_normals, {kNormalsBinding});
   add(tubes && crossing != Crossing::None, {kTubesBinding});
   add(shapes, {kShapesBinding, kShapeRefsBinding});
+  add(triangle_list, {kListedBinding});
   add(paper && point_lights, {kLightsBinding});
   add(reads_cells(), {kCellsBinding});
   add(crossing != Crossing::None, {kCellFacesBinding});

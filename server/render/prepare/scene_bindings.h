@@ -30,6 +30,7 @@ enum SceneBinding : uint32_t {
   kTubesBinding = BINDING_TUBES,
   kShapesBinding = BINDING_SHAPES,
   kShapeRefsBinding = BINDING_SHAPE_REFS,
+  kListedBinding = BINDING_LISTED,
   kSceneBindingCount = BINDING_COUNT
 };
 
