@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <functional>
 #include <string>
 #include <tuple>
@@ -64,6 +65,72 @@ static_assert(sizeof(ProbeResult) == 6 * 16 + 3 * 64 + 11 * 16 + 9 * 16 + 4 * 16
 
 constexpr double kUnitRoundoff = FLT_EPSILON / 2;
 constexpr float kFar = 1e30f;
+
+// A line through `target` on a surface of unit normal n and size `size`, for case i of a twin
+// comparison: in a random direction, or (i % 4 == 2) grazing the surface by 0.5 to 6 degrees
+// from either side; starting 0.1 to 3 (1 + size) before it, and every sixteenth (i % 16 == 4)
+// cut off halfway there by sMax.
+struct AimedLine {
+  Vec3 o, d;
+  double s_max;
+};
+inline AimedLine line_at(ModelSampler& sample, const Vec3& target, const Vec3& n, double size,
+                         int i) {
+  Vec3 d = sample.unit3();
+  if (i % 4 == 2) {
+    const Vec3 along = normalize(d - dot(d, n) * n);
+    d = normalize(along + std::tan(sample.uniform(0.01, 0.1)) * (i % 8 < 4 ? n : -n));
+  }
+  const double back = sample.uniform(0.1, 3) * (1 + size);
+  return {target - back * d, d, i % 16 == 4 ? 0.5 * back : kFar};
+}
+
+// A float chart test against its double twin, case by case: where the line passes within 1e-4
+// (in the surface's own coordinates) of an edge, either may round either way (the band, not
+// compared); elsewhere both hit or both miss, a hit at the same s to 1e-5 (|o| + s + 1) / cos
+// and at the same two surface coordinates to 1e-3 / cos (cos: the line's to the surface).
+struct TwinCase {
+  std::optional<std::array<double, 3>> twin;  // s and the two coordinates, or no hit
+  F4 found;            // the float test's: s (>= 1e29: none) and the two coordinates
+  double inside;       // how far inside the line passes, in the coordinates' units (< 0 out)
+  double cosine;
+  double origin_size;  // |o|
+};
+inline void expect_twin_agrees(const std::vector<TwinCase>& cases, const char* what,
+                               const char* coordinates) {
+  int hits = 0, misses = 0, band = 0, cut = 0;
+  double worst_s = 0, worst_coordinates = 0;
+  for (size_t i = 0; i < cases.size(); ++i) {
+    const TwinCase& c = cases[i];
+    const F4& g = c.found;
+    if (std::abs(c.inside) < 1e-4) {
+      ++band;
+      continue;
+    }
+    if (!c.twin) {
+      ++misses;
+      cut += c.inside > 0;  // inside, but past sMax
+      EXPECT_GE(g[0], 1e29f) << "case " << i << ": float hit at " << g[0];
+      continue;
+    }
+    ++hits;
+    const auto& [s, x, y] = *c.twin;
+    ASSERT_LT(g[0], 1e29f) << "case " << i << ": float miss, double hit at " << s;
+    const double error = std::abs(g[0] - s) * c.cosine / (c.origin_size + s + 1);
+    worst_s = std::max(worst_s, error);
+    EXPECT_LE(error, 1e-5) << "case " << i << ": float " << g[0] << ", double " << s;
+    const double off = std::max(std::abs(g[1] - x), std::abs(g[2] - y)) * c.cosine;
+    worst_coordinates = std::max(worst_coordinates, off);
+    EXPECT_LE(off, 1e-3) << "case " << i;
+  }
+  std::printf("%s: %d hits, %d misses (%d inside but past sMax), %d in the edge band; worst s "
+              "error %.2e (|o| + s + 1) / cos, %s %.2e / cos\n",
+              what, hits, misses, cut, band, worst_s, coordinates, worst_coordinates);
+  EXPECT_GT(hits, 5000);
+  EXPECT_GT(misses, 2300);
+  EXPECT_GT(cut, 400);
+  EXPECT_LT(band, 200);
+}
 
 // Lines through an edge or a vertex that pieces of a surface share (triangles, parallelograms):
 // a line's cases, one per piece, are results[first, first + count); each line must meet at

@@ -68,52 +68,23 @@ TEST(ParallelogramProbe, FloatIntersectionMatchesTheDoubleTwin) {
       else beta = i / 8 % 2 ? -out : 1 + out;
     }
     const Vec3 target = a + alpha * u + beta * v;
-    Vec3 d = sample.unit3();
-    if (i % 4 == 2) {  // grazing: within 0.5 to 6 degrees of the plane
-      const Vec3 along = normalize(d - dot(d, n) * n);
-      d = normalize(along + std::tan(sample.uniform(0.01, 0.1)) * (i % 8 < 4 ? n : -n));
-    }
-    const double back = sample.uniform(0.1, 3) * (1 + size);
-    store(c, p, target - back * d, d, i % 16 == 4 ? 0.5 * back : kFar);
+    const AimedLine line = line_at(sample, target, n, size, i);
+    store(c, p, line.o, line.d, line.s_max);
     cases.push_back(c);
   }
   const auto results = run_probe(GeometryKind::Euclidean, cases);
-  int hits = 0, misses = 0, band = 0, cut = 0;
-  double worst_s = 0, worst_ab = 0;
+  std::vector<TwinCase> compared;
   for (size_t i = 0; i < cases.size(); ++i) {
     const ProbeCase& c = cases[i];
     const Vec3 a = v3(c.triangle_a), b = v3(c.triangle_b), cc = v3(c.triangle_c);
     const Vec3 o = v3(c.chart), d = v3(c.normal);
     const auto twin = intersect_chart_parallelogram(o, d, a, b, cc, 0, c.triangle_a[3]);
-    const auto& g = results[i].parallelogram;
-    if (std::abs(margin(c)) < 1e-4) {
-      ++band;
-      continue;
-    }
-    if (!twin) {
-      ++misses;
-      cut += margin(c) > 0;  // inside, but past sMax
-      EXPECT_GE(g[0], 1e29f) << "case " << i << ": float hit at " << g[0];
-      continue;
-    }
-    ++hits;
-    ASSERT_LT(g[0], 1e29f) << "case " << i << ": float miss, double hit at " << twin->s;
-    const double cosine = std::abs(dot(normalize(d), normalize(cross(b - a, cc - b))));
-    const double error = std::abs(g[0] - twin->s) * cosine / (length(o) + twin->s + 1);
-    worst_s = std::max(worst_s, error);
-    EXPECT_LE(error, 1e-5) << "case " << i << ": float " << g[0] << ", double " << twin->s;
-    const double ab =
-        std::max(std::abs(g[1] - twin->alpha), std::abs(g[2] - twin->beta)) * cosine;
-    worst_ab = std::max(worst_ab, ab);
-    EXPECT_LE(ab, 1e-3) << "case " << i;
+    compared.push_back(
+        {twin ? std::optional(std::array{twin->s, twin->alpha, twin->beta}) : std::nullopt,
+         results[i].parallelogram, margin(c),
+         std::abs(dot(normalize(d), normalize(cross(b - a, cc - b)))), length(o)});
   }
-  std::printf("parallelogram: %d hits, %d misses (%d inside but past sMax), %d in the edge band; "
-              "worst s error %.2e (|o| + s + 1) / cos, alpha and beta %.2e / cos\n",
-              hits, misses, cut, band, worst_s, worst_ab);
-  EXPECT_GT(hits, 5000);
-  EXPECT_GT(misses, 2300);
-  EXPECT_GT(cut, 400);
-  EXPECT_LT(band, 200);
+  expect_twin_agrees(compared, "parallelogram", "alpha and beta");
 }
 
 // Two walls of a box meeting at an edge (at a right angle, or folded 10 to 170 degrees), two

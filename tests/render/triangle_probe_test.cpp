@@ -77,50 +77,21 @@ TEST(TriangleProbe, FloatIntersectionMatchesTheDoubleTwin) {
       else u = 1 - v - out;
     }
     const Vec3 target = at(t, u, v);
-    Vec3 d = sample.unit3();
-    if (i % 4 == 2) {  // grazing: within 0.5 to 6 degrees of the plane
-      const Vec3 along = normalize(d - dot(d, n) * n);
-      d = normalize(along + std::tan(sample.uniform(0.01, 0.1)) * (i % 8 < 4 ? n : -n));
-    }
-    const double back = sample.uniform(0.1, 3) * (1 + size);
-    store(c, t, target - back * d, d, i % 16 == 4 ? 0.5 * back : kFar);
+    const AimedLine line = line_at(sample, target, n, size, i);
+    store(c, t, line.o, line.d, line.s_max);
     cases.push_back(c);
   }
   const auto results = run_probe(GeometryKind::Euclidean, cases);
-  int hits = 0, misses = 0, band = 0, cut = 0;
-  double worst_s = 0, worst_uv = 0;
+  std::vector<TwinCase> compared;
   for (size_t i = 0; i < cases.size(); ++i) {
     const Seen s = read_back(cases[i]);
     const auto twin = intersect_chart_triangle(s.o, s.d, s.t.a, s.t.b, s.t.c, 0, s.s_max);
-    const auto& g = results[i].triangle;
-    if (std::abs(margin(s)) < 1e-4) {
-      ++band;
-      continue;
-    }
-    if (!twin) {
-      misses++;
-      cut += margin(s) > 0;  // inside, but past sMax
-      EXPECT_GE(g[0], 1e29f) << "case " << i << ": float hit at " << g[0];
-      continue;
-    }
-    ++hits;
-    ASSERT_LT(g[0], 1e29f) << "case " << i << ": float miss, double hit at " << twin->s;
     const Vec3 n = normalize(cross(s.t.b - s.t.a, s.t.c - s.t.a));
-    const double cosine = std::abs(dot(normalize(s.d), n));
-    const double error = std::abs(g[0] - twin->s) * cosine / (length(s.o) + twin->s + 1);
-    worst_s = std::max(worst_s, error);
-    EXPECT_LE(error, 1e-5) << "case " << i << ": float " << g[0] << ", double " << twin->s;
-    const double uv = std::max(std::abs(g[1] - twin->u), std::abs(g[2] - twin->v)) * cosine;
-    worst_uv = std::max(worst_uv, uv);
-    EXPECT_LE(uv, 1e-3) << "case " << i;
+    compared.push_back({twin ? std::optional(std::array{twin->s, twin->u, twin->v}) : std::nullopt,
+                        results[i].triangle, margin(s), std::abs(dot(normalize(s.d), n)),
+                        length(s.o)});
   }
-  std::printf("triangle: %d hits, %d misses (%d inside but past sMax), %d in the edge band; "
-              "worst s error %.2e (|o| + s + 1) / cos, barycentrics %.2e / cos\n",
-              hits, misses, cut, band, worst_s, worst_uv);
-  EXPECT_GT(hits, 5000);
-  EXPECT_GT(misses, 2300);
-  EXPECT_GT(cut, 400);
-  EXPECT_LT(band, 200);
+  expect_twin_agrees(compared, "triangle", "barycentrics");
 }
 
 // Quads split along a diagonal and fans of triangles round a vertex, the lines aimed at float
