@@ -350,7 +350,7 @@ std::optional<double> intersect_sphere(GeometryKind k, const Vec4& p, const Vec4
 }
 
 double surface_offset_length(GeometryKind k, const Vec4& q) {
-  double scale = std::max({std::abs(q.x), std::abs(q.y), std::abs(q.z)});
+  double scale = max_abs(Vec3{q.x, q.y, q.z});
   if (k != GeometryKind::Euclidean) scale = std::max(scale, std::abs(q.w));  // E3: w = 1 exactly
   return 1e-4 + 0x1p-15 * scale;
 }

@@ -4,13 +4,6 @@
 #include <cmath>
 
 namespace geodesic {
-namespace {
-
-double largest_coordinate(const Vec3& x) {
-  return std::max({std::abs(x.x), std::abs(x.y), std::abs(x.z)});
-}
-
-}  // namespace
 
 std::optional<ChartParallelogramHit> intersect_chart_parallelogram(const Vec3& o, const Vec3& d,
                                                                    const Vec3& a, const Vec3& b,
@@ -28,7 +21,7 @@ std::optional<ChartParallelogramHit> intersect_chart_parallelogram(const Vec3& o
   // How far outside [0, 1] each lies (<= 0 inside), against m0 |v| / |n| and m0 |u| / |n|,
   // compared squared as the float twin does.
   const double out_a = std::max(-alpha, alpha - 1), out_b = std::max(-beta, beta - 1);
-  const double m0 = 0x1p-18 * (1 + std::max(largest_coordinate(o), largest_coordinate(a)));
+  const double m0 = 0x1p-18 * (1 + std::max(max_abs(o), max_abs(a)));
   if ((out_a > 0 && out_a * out_a * nn > m0 * m0 * dot(v, v)) ||
       (out_b > 0 && out_b * out_b * nn > m0 * m0 * dot(u, u)))
     return std::nullopt;

@@ -6,10 +6,10 @@
 // where the two watertight triangle tests were two, each dearer.
 // Unlike the triangle test it is not watertight by construction: two parallelograms that share
 // an edge (the walls of a box) round the point each their own way. So it is closed with a
-// margin: alpha in [-m |v| / |n|, 1 + m |v| / |n|] (beta likewise with |u|), m = 2^-18 (about
-// 17 float ulps) times 1 + the largest coordinate of the line's origin or of a: neighbours
+// margin: alpha in [-m |v| / |n|, 1 + m |v| / |n|] (beta likewise with |u|), m = 2^-18 (32
+// float ulps) times 1 + the largest coordinate of the line's origin or of a: neighbours
 // overlap by m of the chart, and a float line through an edge they share meets one of them
-// (tests/render/triangle_probe_test.cpp). shaders/geometry/parallelogram.glsl is the float twin.
+// (tests/render/parallelogram_probe_test.cpp). shaders/geometry/parallelogram.glsl is the float twin.
 #pragma once
 
 #include <optional>

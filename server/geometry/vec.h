@@ -25,6 +25,10 @@ struct Vec3 {
 
 constexpr Vec3 operator*(double s, const Vec3& v) { return v * s; }
 constexpr double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+// The largest |coordinate|: the scale of a point, for relative tolerances.
+inline double max_abs(const Vec3& v) {
+  return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
+}
 constexpr Vec3 cross(const Vec3& a, const Vec3& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }

@@ -15,7 +15,6 @@ Vec3 corner(const PackedScene& packed, uint32_t t, int i) {
   return {x[0], x[1], x[2]};
 }
 
-double largest(const Vec3& v) { return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}); }
 bool same(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
 
 // Whether triangles t = (a, b, c) and s = (a, c, d) make a parallelogram, in that order: the
@@ -23,9 +22,9 @@ bool same(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z
 bool pair_of(const PackedScene& packed, uint32_t t, uint32_t s) {
   const Vec3 a = corner(packed, t, 0), b = corner(packed, t, 1), c = corner(packed, t, 2);
   if (!same(corner(packed, s, 0), a) || !same(corner(packed, s, 1), c)) return false;
-  const double size = std::max(largest(b - a), largest(c - b));
-  return size > 0 && largest(corner(packed, s, 2) - (a + c - b)) <= 1e-6 * size &&
-         largest(cross(b - a, c - b)) > 1e-6 * size * size;
+  const double size = std::max(max_abs(b - a), max_abs(c - b));
+  return size > 0 && max_abs(corner(packed, s, 2) - (a + c - b)) <= 1e-6 * size &&
+         max_abs(cross(b - a, c - b)) > 1e-6 * size * size;
 }
 
 }  // namespace
