@@ -10,10 +10,11 @@ build=build-hardening
 fuzz_seconds=${FUZZ_SECONDS:-60}
 
 # -O1: the instrumented tests stay fast enough on two cores; -g1: line numbers in reports.
-# No -DNDEBUG, so assertions stay on. The same tree builds the fuzzers (libFuzzer needs clang).
+# No -DNDEBUG, so assertions stay on. The same tree builds the fuzzers (libFuzzer needs clang),
+# not the benchmarks, which no test runs.
 cmake -S . -B "$build" -G Ninja -DCMAKE_CXX_COMPILER=clang++-14 \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1" \
-  -DGEODESIC_SANITIZE=ON -DGEODESIC_FUZZ=ON >/dev/null
+  -DGEODESIC_SANITIZE=ON -DGEODESIC_FUZZ=ON -DGEODESIC_BENCH=OFF >/dev/null
 cmake --build "$build" -j "$(nproc)"
 
 # Leak checking is on, with no suppressions: Mesa, the Vulkan loader and LLVM leak nothing that
