@@ -76,7 +76,9 @@ TEST(EnumerationBudget, TwoHundredNearlyParallelTranslationsAreRefusedWellUnderA
   EXPECT_NE(error.find("not compact (they are translations spanning only a line)"),
             std::string::npos)
       << error;
-  EXPECT_LT(seconds, 0.5) << error;
+  // 0.05 s in the build users run; 0.71 s once under the sanitizers (instrumented, with the
+  // fuzzers' coverage, beside other tests: load/sanitizer.h), bounded there at seven times that.
+  EXPECT_LT(seconds, test::kAddressSanitizer ? 5.0 : 0.5) << error;
   std::printf("200 nearly parallel translations: refused in %.3f s\n", seconds);
 }
 
