@@ -25,7 +25,7 @@ struct Vec3 {
 
 constexpr Vec3 operator*(double s, const Vec3& v) { return v * s; }
 constexpr double dot(const Vec3& a, const Vec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-// The largest |coordinate|: the scale of a point, for relative tolerances.
+// The largest |coordinate|: the scale of a point, for relative tolerances (Vec4's below).
 inline double max_abs(const Vec3& v) {
   return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)});
 }
@@ -44,6 +44,10 @@ struct Vec4 {
 
   constexpr Vec3 xyz() const { return {x, y, z}; }
 };
+
+inline double max_abs(const Vec4& v) {
+  return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z), std::abs(v.w)});
+}
 
 // 4x4 matrix acting on column vectors; m[row][col]. Isometries of every model geometry
 // (E3 in homogeneous coordinates, H3 in R^{3,1}, S3 in R^4) are 4x4 matrices of this kind.

@@ -22,12 +22,11 @@ double max_abs_difference(const Mat4& a, const Mat4& b) {
 }
 
 double coordinate_distance(const Vec4& a, const Vec4& b) {
-  return std::max({std::abs(a.x - b.x), std::abs(a.y - b.y), std::abs(a.z - b.z),
-                   std::abs(a.w - b.w)});
+  return max_abs(a - b);
 }
 
 double size_of(const Vec4& p) {
-  return std::max({1.0, std::abs(p.x), std::abs(p.y), std::abs(p.z), std::abs(p.w)});
+  return std::max(1.0, max_abs(p));
 }
 
 // Products between two looks at the preparation budget (about a millisecond of work).

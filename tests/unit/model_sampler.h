@@ -14,9 +14,6 @@
 
 namespace geodesic::test {
 
-inline double max_abs(const Vec4& v) {
-  return std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z), std::abs(v.w)});
-}
 inline double max_abs(const Mat4& g) {
   double m = 0;
   for (const auto& row : g.m)

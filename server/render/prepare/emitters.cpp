@@ -69,9 +69,7 @@ void keep_nearest(std::vector<Image>& images) {
 }
 
 bool same_horosphere(const Vec4& a, const Vec4& b) {
-  const double scale = std::max({std::abs(a.x), std::abs(a.y), std::abs(a.z), std::abs(a.w)});
-  const Vec4 d = a - b;
-  return std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z), std::abs(d.w)}) <= 1e-7 * scale;
+  return max_abs(a - b) <= 1e-7 * max_abs(a);
 }
 
 // `image` added to `images` unless its horoball is there already.
