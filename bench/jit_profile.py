@@ -39,9 +39,8 @@ def record(args, work):
                         str(args.size), "--spp", str(args.spp), "-o",
                         os.path.join(work, "out.png")],
                        env=env, stdout=subprocess.DEVNULL, stderr=listing, check=True)
-    script = subprocess.run(["perf", "script", "-i", data, "--show-mmap-events", "-F", "ip,dso"],
-                            capture_output=True, text=True, check=True).stdout
-    return data, script
+    return subprocess.run(["perf", "script", "-i", data, "--show-mmap-events", "-F", "ip,dso"],
+                          capture_output=True, text=True, check=True).stdout
 
 
 def jit_mapping(script):
@@ -77,21 +76,29 @@ def main():
     parser.add_argument("--show", type=int, default=0)
     args = parser.parse_args()
     with tempfile.TemporaryDirectory() as work:
-        _, script = record(args, work)
+        script = record(args, work)
         start, length = jit_mapping(script)
         body = listing_of(os.path.join(work, "asm.txt"))
     if not length or not body:
         sys.exit("jit_profile: no JIT mapping or no cs_co_variant listing (is GALLIVM_DEBUG "
                  "honoured by this Mesa?)")
-    samples = [int(ip, 16) - start for ip, dso in re.findall(r"^\s*([0-9a-f]+) \((.*)\)$", script,
-                                                            re.M)
-               if dso.startswith("/tmp/perf-") or dso.startswith("[JIT]")]
+    # Samples per offset into the mapping, counted once for the search over shifts below.
+    samples = collections.Counter(
+        int(ip, 16) - start for ip, dso in re.findall(r"^\s*([0-9a-f]+) \((.*)\)$", script, re.M)
+        if dso.startswith("/tmp/perf-") or dso.startswith("[JIT]"))
     index = {offset: i for i, (offset, _) in enumerate(body)}
-    shift = max(range(0, min(length, 1 << 16), 16),
-                key=lambda s: sum(1 for o in samples if o - s in index))
-    counts = collections.Counter(index[o - shift] for o in samples if o - shift in index)
+
+    def landing(shift):
+        return sum(n for o, n in samples.items() if o - shift in index)
+
+    shift = max(range(0, min(length, 1 << 16), 16), key=landing)
+    counts = collections.Counter()
+    for o, n in samples.items():
+        if o - shift in index:
+            counts[index[o - shift]] += n
     landed = sum(counts.values())
-    print(f"{args.scene}: {len(samples)} samples in JIT code, {100 * landed / max(1, len(samples)):.1f} % "
+    total = sum(samples.values())
+    print(f"{args.scene}: {total} samples in JIT code, {100 * landed / max(1, total):.1f} % "
           f"on instruction boundaries of cs_co_variant (at +{shift:#x}; {len(body)} instructions)")
     blocks = collections.Counter()
     for i, n in counts.items():
