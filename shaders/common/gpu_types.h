@@ -138,7 +138,12 @@ struct Cell {
   uint listed_begin;
   uint listed_count;
   uint listed_pairs;  // the first listed_pairs of them are parallelograms, the rest triangles
+  // Its shape refs, shape refs [shape_begin, shape_begin + shape_count) (SHAPE_LIST).
+  uint shape_begin;
+  uint shape_count;
   uint pad0;
+  uint pad1;
+  uint pad2;
 };
 
 // What a segment of a cell that lists its triangles tests (TRIANGLE_LIST,
@@ -216,7 +221,7 @@ struct SampleRange {
 #ifdef __cplusplus
 static_assert(sizeof(Material) == 96 && sizeof(Sphere) == 32 && sizeof(SphereRef) == 8 &&
               sizeof(PointLight) == 32 && sizeof(TriangleInfo) == 16 && sizeof(Emitter) == 112 &&
-              sizeof(LightImage) == 80 && sizeof(Cell) == 176 && sizeof(Tube) == 48 &&
+              sizeof(LightImage) == 80 && sizeof(Cell) == 192 && sizeof(Tube) == 48 &&
               sizeof(CellFace) == 112 && sizeof(FrameUniforms) == 144 &&
               sizeof(SampleRange) == 24,
               "a 16-byte multiple for every array element, std140's for the frame");

@@ -9,18 +9,17 @@
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
 #include "common/core.glsl"
-#include "primitives/shape_candidate.glsl"
-#include "primitives/sphere_candidate.glsl"
+#include "primitives/analytic_list.glsl"
 #include "primitives/triangle_list.glsl"
 
 // The closest (or, for shadows, any) hit along the chart segment o + s d, s in [0, sMax], in
 // the given cell; (p, v) is the same ray in the cell's frame.
 ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool anyHit) {
   ChartHit best = noChartHit();
-#if defined(SPHERE_LIST)
-  // The cell's few spheres one by one; the acceleration structure holds its triangles alone,
-  // which only a hit nearer than the nearest sphere's can matter.
-  best = nearestListedSphere(cell, p, v, sMax, anyHit);
+#if defined(ANALYTIC_LIST)
+  // The cell's few spheres and shapes one by one; the acceleration structure holds its
+  // triangles alone, which only a hit nearer than the nearest listed one's can matter.
+  best = nearestListedAnalytic(cell, p, v, sMax, anyHit);
 #if !defined(HAS_TRIANGLES)
   return best;
 #endif
@@ -53,7 +52,7 @@ ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool 
     float s, t;
     // A box's kind is its instance's hit record (render/device/acceleration.cpp).
     uint record = rayQueryGetIntersectionInstanceShaderBindingTableRecordOffsetEXT(q, false);
-#if defined(HAS_SHAPES)
+#if defined(HAS_SHAPES) && !defined(SHAPE_LIST)
     if (record == HIT_RECORD_SHAPES) {
       ShapeRef ref = shapeRefs[candidate];
 #if defined(SHARED_CELL_MASKS)
@@ -88,7 +87,7 @@ ChartHit traceChart(vec3 o, vec3 d, float sMax, uint cell, vec4 p, vec4 v, bool 
 #endif
 #endif
   // No triangle: the last generated box hit (the committed one), or the nearest listed
-  // sphere, or none.
+  // sphere or shape, or none.
   return best;
 }
 

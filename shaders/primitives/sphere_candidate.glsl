@@ -24,23 +24,5 @@ bool sphereCandidate(SphereRef ref, vec4 p, vec4 v, float sMin, float sMax, out 
   return s >= sMin && s <= sMax;
 }
 
-#if defined(SPHERE_LIST)
-// The nearest of the cell's spheres on the chart segment s in (0, sMax] (for a shadow ray any
-// one), each tested as a traversal would confirm it: a cell with faces and a few spheres
-// alone (server/render/prepare/pipeline_features.h sphere_list) needs no acceleration structure.
-ChartHit nearestListedSphere(uint cell, vec4 p, vec4 v, float sMax, bool anyHit) {
-  ChartHit best = noChartHit();
-  Cell c = cellRecord(cell);
-  for (uint i = c.sphere_begin; i < c.sphere_begin + c.sphere_count; ++i) {
-    float s, t;
-    if (!sphereCandidate(sphereRefs[i], p, v, 0.0, min(sMax, best.s), s, t)) continue;
-    best = ChartHit(HIT_SPHERE, sphereRefs[i].sphere, s, t, vec2(0.0));
-    if (anyHit) break;
-  }
-  return best;
-}
 #endif
-
-#endif
-
 #endif

@@ -151,8 +151,8 @@ TEST(PipelineFeatures, SpacesOfOneCellReadItAtAUniformIndex) {
 }
 
 // Segments test their cell's spheres one by one where each cell holds at most
-// kSphereListLength (and no shapes), in a space with faces or of one cell; the acceleration
-// structure traces the triangles beside them.
+// kSphereListLength (and at most kShapeListLength shapes), in a space with faces or of one
+// cell; the acceleration structure traces the triangles beside them.
 // (EveryBundledScene/SpecialisedPipelines.RenderAsWithAllFeatures/* hold the images: the
 // all-features pipeline traverses.)
 TEST(PipelineFeatures, SmallCellsOfSpheresAreTestedOneByOne) {
@@ -164,8 +164,10 @@ TEST(PipelineFeatures, SmallCellsOfSpheresAreTestedOneByOne) {
   // Beside triangles, and in one cell without faces.
   for (const char* name : {"torus-cornell", "cornell-box", "hyperbolic-spheres"})
     EXPECT_TRUE(listed(bundled(name))) << name;
-  // No spheres; shapes, whose boxes the structure holds.
-  for (const char* name : {"furnace", "horospheres"}) EXPECT_FALSE(listed(bundled(name))) << name;
+  // Beside listed shapes.
+  for (const char* name : {"horospheres", "figure-eight-knot", "whitehead-link"})
+    EXPECT_TRUE(listed(bundled(name))) << name;
+  EXPECT_FALSE(listed(bundled("furnace")));  // no spheres
   EXPECT_FALSE(all_features(GeometryKind::Hyperbolic).sphere_list);
   // A 3-torus holding n spheres: listed up to kSphereListLength.
   const auto torus = [](uint32_t n) {
@@ -183,7 +185,7 @@ TEST(PipelineFeatures, SmallCellsOfSpheresAreTestedOneByOne) {
 }
 
 // Segments test their cell's triangles one by one, and traverse nothing, where each cell holds
-// at most kTriangleListLength, its spheres are listed (or none) and there are no shapes.
+// at most kTriangleListLength, its spheres and shapes are listed (or none).
 // (EveryBundledScene/SpecialisedPipelines.RenderAsWithAllFeatures/* hold the images: the
 // all-features pipeline traverses; TriangleProbe holds the test against its double twin.)
 TEST(PipelineFeatures, SmallCellsOfTrianglesAreTestedOneByOne) {
@@ -194,7 +196,7 @@ TEST(PipelineFeatures, SmallCellsOfTrianglesAreTestedOneByOne) {
   };
   for (const char* name : {"cornell-box", "furnace", "quarter-turn-space"})
     EXPECT_TRUE(listed(bundled(name))) << name;
-  // No triangles; shapes, whose boxes the structure holds.
+  // No triangles.
   for (const char* name : {"mirrored-dodecahedron", "horospheres"})
     EXPECT_FALSE(listed(bundled(name))) << name;
   EXPECT_FALSE(all_features(GeometryKind::Euclidean).triangle_list);
@@ -212,6 +214,70 @@ TEST(PipelineFeatures, SmallCellsOfTrianglesAreTestedOneByOne) {
   };
   EXPECT_TRUE(listed(quads(kTriangleListLength / 2)));
   EXPECT_FALSE(listed(quads(kTriangleListLength / 2 + 1)));
+}
+
+// A horosphere and a sphere beside n quads (2 n triangles) in H3, lit by a sphere light.
+Scene horosphere_and_quads(uint32_t n) {
+  std::string objects = R"({"type": "horosphere", "material": "m", "direction": [0, -1, 0],
+                            "distance": 0.3},
+                           {"type": "sphere", "material": "m", "center": [0.3, 0, -0.2],
+                            "radius": 0.15})";
+  for (uint32_t i = 0; i < n; ++i)
+    objects += R"(, {"type": "quad", "material": "m", "corner": [-0.4, -0.2, )" +
+               std::to_string(-0.5 - 0.02 * i) + R"(], "edge_u": [0.8, 0, 0],
+                  "edge_v": [0, 0.4, 0]})";
+  return scene_from_json(R"({"geometry": "hyperbolic",
+    "camera": {"position": [0, 0.1, 0.6], "look_at": [0, -0.1, 0]},
+    "materials": {"m": {"diffuse": 0.6}, "L": {"emission": 40}},
+    "objects": [)" + objects + R"(, {"type": "sphere", "material": "L", "center": [0, 0.3, 0],
+                                    "radius": 0.08}],
+    "render": {"width": 32, "height": 32, "max_depth": 4}})");
+}
+
+// Segments test their cell's shapes one by one under sphere_list's condition (both or
+// neither): the cusped spaces' two horospheres and four spheres traverse nothing, and beside
+// triangles the acceleration structure holds the triangles alone. (RenderAsWithAllFeatures
+// holds the bundled images, ListedShapesBesideTriangles the two mixed cases.)
+TEST(PipelineFeatures, SmallCellsOfShapesAreTestedOneByOne) {
+  const auto listed = [](const Scene& scene) {
+    return feature(scene, &PipelineFeatures::shape_list, "SHAPE_LIST");
+  };
+  for (const char* name : {"horospheres", "figure-eight-knot", "whitehead-link"}) {
+    const Scene scene = bundled(name);
+    EXPECT_TRUE(listed(scene)) << name;
+    EXPECT_TRUE(scene_features(scene, pack_scene(scene)).sphere_list) << name;
+  }
+  for (const char* name : {"mirrored-dodecahedron", "cornell-box"})  // no shapes
+    EXPECT_FALSE(listed(bundled(name))) << name;
+  EXPECT_FALSE(all_features(GeometryKind::Hyperbolic).shape_list);
+  // Beside triangles: listed too (traversed), and the structure holds no shape boxes.
+  for (uint32_t quads : {kTriangleListLength / 2, kTriangleListLength / 2 + 1}) {
+    const Scene scene = horosphere_and_quads(quads);
+    const PipelineFeatures f = scene_features(scene, pack_scene(scene));
+    EXPECT_TRUE(f.shape_list && f.sphere_list) << quads;
+    EXPECT_FALSE(f.traced_shapes() || f.traced_spheres()) << quads;
+    EXPECT_EQ(f.triangle_list, quads <= kTriangleListLength / 2);
+  }
+}
+
+// Listed shapes and spheres beside listed triangles (nothing traversed) and beside traversed
+// ones (the structure holding triangles alone) render as the all-features pipeline, which
+// traverses every box: same samples, so within the noise of the two.
+TEST(ListedShapesBesideTriangles, RenderAsWithAllFeatures) {
+  for (uint32_t quads : {kTriangleListLength / 2, kTriangleListLength / 2 + 1}) {
+    const Scene scene = horosphere_and_quads(quads);
+    Renderer all(device(), scene, BackendKind::RayQuery, PipelineVariant::AllFeatures);
+    Renderer listed(device(), scene, BackendKind::RayQuery, PipelineVariant::Specialised);
+    ASSERT_TRUE(listed.features().shape_list);
+    all.add_samples(64);
+    listed.add_samples(64);
+    EXPECT_EQ(listed.non_finite_samples(), 0u);
+    const double a = luminance_of(mean(listed.image())), b = luminance_of(mean(all.image()));
+    EXPECT_GT(b, 0.01) << quads;  // the scene is lit
+    const double noise = std::hypot(listed.estimated_error(), all.estimated_error());
+    EXPECT_LE(relative_rms_difference(listed.image(), all.image()), 1.5 * noise) << quads;
+    EXPECT_NEAR(a, b, 0.03 * b) << quads;
+  }
 }
 
 // Paths go on past their last bounce (UNSAMPLED_EMISSION) only where light sampling leaves

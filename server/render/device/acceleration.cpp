@@ -105,7 +105,8 @@ void AccelerationStructure::release() {
 
 SceneAccelerationStructures SceneAccelerationStructures::build(VulkanContext& ctx,
                                                                const PackedScene& scene,
-                                                               bool sphere_boxes) {
+                                                               bool sphere_boxes,
+                                                               bool shape_boxes) {
   SceneAccelerationStructures out;
   std::vector<VkAccelerationStructureInstanceKHR> instances;
   out.positions = GpuBuffer::from_vector(ctx, scene.positions, kBuildInput);
@@ -157,7 +158,8 @@ SceneAccelerationStructures SceneAccelerationStructures::build(VulkanContext& ct
     if (sphere_boxes)
       add_boxes(out.sphere_bounds, cell.first_sphere_ref, cell.sphere_ref_count,
                 HIT_RECORD_SPHERES);
-    add_boxes(out.shape_bounds, cell.first_shape_ref, cell.shape_ref_count, HIT_RECORD_SHAPES);
+    if (shape_boxes)
+      add_boxes(out.shape_bounds, cell.first_shape_ref, cell.shape_ref_count, HIT_RECORD_SHAPES);
   }
 
   out.instances = GpuBuffer::from_vector(ctx, instances, kBuildInput);

@@ -47,10 +47,10 @@ struct SceneAccelerationStructures {
   std::vector<AccelerationStructure> bottom;
   AccelerationStructure top;
 
-  // Without sphere boxes where the shaders test each cell's spheres one by one beside the
-  // traversal (PipelineFeatures::traced_spheres).
+  // Without sphere (shape) boxes where the shaders test each cell's spheres (shapes) one by
+  // one beside the traversal (PipelineFeatures::traced_spheres, traced_shapes).
   static SceneAccelerationStructures build(VulkanContext& ctx, const PackedScene& scene,
-                                           bool sphere_boxes = true);
+                                           bool sphere_boxes = true, bool shape_boxes = true);
 };
 
 }  // namespace geodesic

@@ -33,7 +33,8 @@ constexpr HitGroup kHitGroups[] = {
      "entry/sphere.rahit", "entry/sphere.rint",
      [](const PipelineFeatures& f) { return f.traced_spheres(); }},
     {VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR, "entry/shape.rchit",
-     "entry/shape.rahit", "entry/shape.rint", [](const PipelineFeatures& f) { return f.shapes; }}};
+     "entry/shape.rahit", "entry/shape.rint",
+     [](const PipelineFeatures& f) { return f.traced_shapes(); }}};
 constexpr uint32_t kHitRecords = std::size(kHitGroups);
 static_assert(HIT_RECORD_TRIANGLES == 0 && HIT_RECORD_SPHERES == 1 && HIT_RECORD_SHAPES == 2);
 

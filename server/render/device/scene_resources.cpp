@@ -50,7 +50,8 @@ SceneResources::SceneResources(VulkanContext& ctx, const Scene& scene, PipelineV
       uniforms_(make_uniforms(scene, packed_)) {
   features_.primitive_culling = ctx.description().primitive_culling;
   features_.shared_cell_masks = packed_.cells.size() > 8;
-  structures_ = SceneAccelerationStructures::build(ctx, packed_, features_.traced_spheres());
+  structures_ = SceneAccelerationStructures::build(ctx, packed_, features_.traced_spheres(),
+                                                   features_.traced_shapes());
   capacity_ = size_t(width()) * height();
   frame_ = GpuBuffer(ctx, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   std::memcpy(frame_.mapped(), &uniforms_, sizeof(uniforms_));

@@ -290,6 +290,8 @@ PackedScene pack_scene(const Scene& scene) {
     packed.listed_count = uint32_t(out.listed.size()) - packed.listed_begin;
     packed.sphere_begin = g.first_sphere_ref;
     packed.sphere_count = g.sphere_ref_count;
+    packed.shape_begin = g.first_shape_ref;
+    packed.shape_count = g.shape_ref_count;
     out.cells.push_back(packed);
     out.cell_geometry.push_back(g);
   }

@@ -81,13 +81,14 @@ PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
   f.triangles = !packed.triangles.empty();
   f.tubes = !packed.tubes.empty();
   f.shapes = !packed.shape_refs.empty();
-  f.sphere_list = f.spheres && !f.shapes &&
-                  (f.crossing != Crossing::None || packed.cells.size() == 1) &&
-                  std::all_of(packed.cells.begin(), packed.cells.end(), [](const GpuCell& c) {
-                    return c.sphere_count <= kSphereListLength;
-                  });
-  f.triangle_list = f.triangles && !f.shapes && (!f.spheres || f.sphere_list) &&
-                    (f.crossing != Crossing::None || packed.cells.size() == 1) &&
+  const bool listable = f.crossing != Crossing::None || packed.cells.size() == 1;
+  const bool analytic_list =
+      listable && std::all_of(packed.cells.begin(), packed.cells.end(), [](const GpuCell& c) {
+        return c.sphere_count <= kSphereListLength && c.shape_count <= kShapeListLength;
+      });
+  f.sphere_list = f.spheres && analytic_list;
+  f.shape_list = f.shapes && analytic_list;
+  f.triangle_list = f.triangles && (analytic_list || !(f.spheres || f.shapes)) && listable &&
                     std::all_of(packed.cell_geometry.begin(), packed.cell_geometry.end(),
                                 [](const CellGeometry& g) {
                                   return g.triangle_count <= kTriangleListLength;
@@ -162,6 +163,7 @@ std::vector<std::string> PipelineFeatures::defines() const {
   flag(tubes && crossing != Crossing::None, "HAS_TUBES");
   flag(shapes, "HAS_SHAPES");
   flag(sphere_list, "SPHERE_LIST");
+  flag(shape_list, "SHAPE_LIST");
   flag(triangle_list, "TRIANGLE_LIST");
   flag(single_cell, "SINGLE_CELL");
   flag(smooth_normals, "HAS_SMOOTH_NORMALS");
@@ -227,6 +229,7 @@ std::string PipelineFeatures::summary() const {
   word(tubes, "tubes");
   word(shapes, "shapes");
   word(sphere_list, "sphere-list");
+  word(shape_list, "shape-list");
   word(triangle_list, "triangle-list");
   word(single_cell, "one-cell");
   word(smooth_normals, "smooth-normals");

@@ -27,6 +27,8 @@ enum class PipelineVariant { Specialised, AllFeatures };
 
 // The most spheres a cell may hold for its segments to test them one by one (sphere_list).
 constexpr uint32_t kSphereListLength = 8;
+// The most shapes a cell may hold for its segments to test them one by one (shape_list).
+constexpr uint32_t kShapeListLength = 8;
 // The most triangles a cell may hold for its segments to test them one by one (triangle_list).
 constexpr uint32_t kTriangleListLength = 32;
 
@@ -38,14 +40,17 @@ struct PipelineFeatures {
   bool spheres = false, triangles = false, smooth_normals = false;
   bool tubes = false;  // the domain's edge tubes, intersected analytically
   bool shapes = false;  // analytic shapes (scene/shape.h), on boxes like spheres
-  // Cells holding at most kSphereListLength spheres each (and no shapes), in a space with
-  // faces or of one cell: a chart segment tests its cell's spheres one by one (SPHERE_LIST)
-  // and the acceleration structure holds only triangles, as a traversal's setup, or a box
-  // instance's, costs more than a few analytic tests (on lavapipe 7 % of a path in the
-  // mirrored dodecahedron). Specialised pipelines only.
+  // Cells holding at most kSphereListLength spheres and kShapeListLength shapes each, in a
+  // space with faces or of one cell: a chart segment tests its cell's spheres one by one
+  // (SPHERE_LIST), and its shapes (SHAPE_LIST), and the acceleration structure holds only
+  // triangles, as a traversal's setup, or a box instance's, costs more than a few analytic
+  // tests (on lavapipe 7 % of a path in the mirrored dodecahedron; the cusped spaces' two
+  // horospheres and four spheres, docs/pipelines.md). Both or neither: a traversal for the
+  // boxes of one kind would find the other's too. Specialised pipelines only.
   bool sphere_list = false;
-  // Cells holding at most kTriangleListLength triangles each, their spheres listed (or none)
-  // and no shapes, under sphere_list's condition on the space: a segment tests its cell's
+  bool shape_list = false;
+  // Cells holding at most kTriangleListLength triangles each, their spheres and shapes listed
+  // (or none), under sphere_list's condition on the space: a segment tests its cell's
   // triangles one by one too (those of a segment that meets their box) and nothing is
   // traversed. On lavapipe a ray query costs about what 30-40 triangle tests do
   // (docs/pipelines.md: the Cornell box's 16 triangles 1.12-1.33x the paths/s, 64 half).
@@ -84,13 +89,16 @@ struct PipelineFeatures {
   // Spheres in the acceleration structure, as boxes: unless listed beside triangles (without
   // triangles nothing is traversed, and their boxes keep the structure from being empty).
   bool traced_spheres() const { return spheres && !(sphere_list && triangles); }
-  // Boxes in the acceleration structure: spheres there, and shapes (the define TRACED_BOXES).
-  bool traced_boxes() const { return traced_spheres() || shapes; }
+  // Shapes there, as boxes: as spheres.
+  bool traced_shapes() const { return shapes && !(shape_list && triangles); }
+  // Boxes in the acceleration structure (the define TRACED_BOXES).
+  bool traced_boxes() const { return traced_spheres() || traced_shapes(); }
   // Whether segments read cell records (the define READS_CELLS, which declares the cell
   // buffer in shaders/common/scene_data.glsl): to cross faces, to pick a cell's chart, or for
   // the spheres and triangles a cell lists.
   bool reads_cells() const {
-    return crossing != Crossing::None || multiple_charts || sphere_list || triangle_list;
+    return crossing != Crossing::None || multiple_charts || sphere_list || shape_list ||
+           triangle_list;
   }
 
   // The preprocessor defines, one "NAME" or "NAME=VALUE" each, in a fixed order.
