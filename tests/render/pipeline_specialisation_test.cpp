@@ -367,10 +367,11 @@ TEST(DumpedShaders, ScenesWithoutPointLightsCarryNoPointLightSampling) {
 // Same samples, same estimator: the specialised image differs from the all-features one by at
 // most what their noise explains (usually not at all: most scenes agree bit for bit). Every
 // bundled scene with ray queries; with the ray-tracing pipeline, one per kind of hit groups
-// and crossing, against the same all-features ray-query image (the two back ends draw the same
-// samples: SharedCellMasks holds them together; on lavapipe 64 spp at 32x32 take about 40 s with
-// an all-features ray-tracing pipeline, 4 s with a specialised one). One test per scene, so
-// that ctest spreads them over the cores.
+// and crossing (the figure-eight knot for listed shapes), against the same all-features
+// ray-query image (the two back ends draw the same samples: SharedCellMasks holds them
+// together; on lavapipe 64 spp at 32x32 take about 40 s with an all-features ray-tracing
+// pipeline, 4 s with a specialised one). One test per scene, so that ctest spreads them over
+// the cores.
 class SpecialisedPipelines : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SpecialisedPipelines, RenderAsWithAllFeatures) {
@@ -382,7 +383,8 @@ TEST_P(SpecialisedPipelines, RenderAsWithAllFeatures) {
   Renderer all(device(), scene, BackendKind::RayQuery, PipelineVariant::AllFeatures);
   all.add_samples(64);
   const std::vector<std::string> pipeline_scenes = {"torus-cornell", "spherical-lamps",
-                                                    "mirrored-dodecahedron", "furnace"};
+                                                    "mirrored-dodecahedron", "furnace",
+                                                    "figure-eight-knot"};
   for (BackendKind backend : {BackendKind::RayQuery, BackendKind::RayTracingPipeline}) {
     if (backend == BackendKind::RayTracingPipeline &&
         (!device().description().ray_tracing_pipeline ||
