@@ -360,8 +360,8 @@ std::vector<EdgeCycle> edge_cycles(GeometryKind kind, const Manifold& m, double 
 }
 
 void validate_manifold(GeometryKind kind, const Manifold& m, double tol) {
-  if (m.max_crossings < 0 || m.max_crossings > 64)
-    throw SceneError("manifold.max_crossings: must be in [0, 64]");
+  if (m.max_crossings < 0 || m.max_crossings > kMaxCrossings)
+    throw SceneError("manifold.max_crossings: must be in [0, " + std::to_string(kMaxCrossings) + "]");
   if (m.faces.empty()) return;
   const int n = static_cast<int>(m.faces.size());
   for (int f = 0; f < n; ++f) {

@@ -38,6 +38,9 @@ struct DomainPiece {
   Polyhedron polyhedron;  // in the piece's chart
 };
 
+// The most face crossings a ray may make (manifold.max_crossings).
+inline constexpr int kMaxCrossings = 64;
+
 struct Manifold {
   std::string name = "none";      // "none" for the whole space
   std::vector<DomainFace> faces;  // empty: no quotient

@@ -70,7 +70,7 @@ Manifold read_manifold(const JsonNode& node, GeometryKind kind,
               "\"poincare-dodecahedral\", \"seifert-weber\", \"generic\", \"generators\" or "
               "\"lens\")");
   }
-  if (const auto n = node.find("max_crossings")) m.max_crossings = read_int(*n, 0, 64);
+  if (const auto n = node.find("max_crossings")) m.max_crossings = read_int(*n, 0, kMaxCrossings);
   return m;
 }
 
