@@ -98,7 +98,7 @@ struct Emitter {
   float cdf;      // sum of pmf up to and including this one
   uint image_begin;  // its images: light images [image_begin, image_begin + image_count)
   uint image_count;
-  uint pad0;
+  uint antipodal_pairs;  // point light, group holding -1: each image c stands for c and -c
   uint pad1;
 };
 

@@ -56,7 +56,8 @@ uint branchCount() { return 1u; }
 #endif
 float branchDistance(float d, uint branch) { return branch == 0u ? d : FULL_TURN - d; }
 
-// How much the geodesics to the emitter's image c may bring, seen from x: the selection
+// How much the geodesics to the emitter's image c (and, for an antipodal pair, -c) may bring,
+// seen from x: the selection
 // weights of branch 0 and branch 1 (the long way round, S3; it counts when the cutoff exceeds
 // pi). Inside a sphere only the direct branch reaches its surface first; a point light behind
 // the surface (geometric normal ng, zero to skip the test) brings nothing: the sign of
@@ -82,6 +83,9 @@ vec2 imageWeights(Emitter e, vec4 x, vec4 c, vec4 ng) {
     // the tangent towards c has length sqrt(A)); the long way round leaves by the opposite
     // direction.
     float side = modelInner(c - x, ng);
+    // An antipodal pair (S3, -1 in the group): c and -c weigh the same, A(pi - d) = A(d), and
+    // the one in front of the surface takes it all (sampleLight picks it).
+    if (e.antipodal_pairs != 0u) side = abs(side);
     return branches * vec2(max(side, 0.0), max(-side, 0.0)) / (spread * sqrt(spread));
   }
 #endif
@@ -176,6 +180,9 @@ bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) 
 #endif
   mat4 g = lightImages[e.image_begin + image].isometry;
   vec4 c = lightImages[e.image_begin + image].center;
+#if defined(HAS_POINT_LIGHTS)
+  if (e.antipodal_pairs != 0u && modelInner(c - x, ng) < 0.0) c = -c;  // the pair's front one
+#endif
   float d = geodesicDistance(x, c);
   float sign = branch == 0u ? 1.0 : -1.0;
   vec4 toward = geodesicDirection(x, c);

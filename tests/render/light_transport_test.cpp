@@ -120,15 +120,23 @@ void expect_point_light_images_sum(const std::string& geometry, const std::strin
   const bool antipodal = manifold.find("poincare") != std::string::npos;
   if (kind == GeometryKind::Spherical) EXPECT_NEAR(table.cutoff, antipodal ? M_PI : 2 * M_PI, 1e-5);
   const Vec4 x = model::origin(), normal{0, 0, 1, 0};
+  // Where the group holds -1 an image stands for itself and its antipode, and then the
+  // images cover the whole group, the binary icosahedral group's 120 elements: every copy of
+  // the light lies within the cutoff of pi.
+  EXPECT_EQ(e.antipodal_pairs != 0, antipodal);
+  if (antipodal) EXPECT_EQ(2 * e.image_count, 120u);
   const bool both_ways = kind == GeometryKind::Spherical && table.cutoff > M_PI;
   double sum = 0;
   for (uint32_t j = 0; j < e.image_count; ++j) {
     const auto& c = table.images[e.image_begin + j].center;
-    const Vec4 centre{c[0], c[1], c[2], c[3]};
-    const double spread = model::area_factor_between(kind, x, centre);
-    const double along = model::inner(kind, centre - x, normal);  // cos sqrt(A)
-    sum += std::max(along, 0.0) / (spread * std::sqrt(spread));
-    if (both_ways) sum += std::max(-along, 0.0) / (spread * std::sqrt(spread));
+    for (const double sign : {1.0, -1.0}) {
+      if (sign < 0 && !e.antipodal_pairs) continue;
+      const Vec4 centre = sign * Vec4{c[0], c[1], c[2], c[3]};
+      const double spread = model::area_factor_between(kind, x, centre);
+      const double along = model::inner(kind, centre - x, normal);  // cos sqrt(A)
+      sum += std::max(along, 0.0) / (spread * std::sqrt(spread));
+      if (both_ways) sum += std::max(-along, 0.0) / (spread * std::sqrt(spread));
+    }
   }
   const double expected = 0.5 / M_PI * sum;
   Renderer renderer(device(), scene);
@@ -140,7 +148,8 @@ void expect_point_light_images_sum(const std::string& geometry, const std::strin
 
 // In S3 both ways round where the group lacks the antipodal map (L(11, 3)); where it holds it
 // (the Poincare space) the long way round meets the patch's own copy at the antipode, and
-// light sampling leaves it out (server/render/prepare/emitters.cpp).
+// light sampling leaves it out, but every copy of the light is reached the short way: its 120
+// images as 60 antipodal pairs (server/render/prepare/emitters.cpp).
 TEST(PointLight, ItsImagesInAQuotientSumToTheirClosedForm) {
   expect_point_light_images_sum("euclidean", R"({"type": "torus", "size": 1.5})", {0.3, -0.2, 0.4}, 4);
   expect_point_light_images_sum("spherical", R"({"type": "lens", "p": 11, "q": 3, "max_crossings": 48})",

@@ -147,7 +147,7 @@ TEST(GpuLayout, EveryHostStructHasItsShaderStructsOffsetsAndStride) {
         AT(GpuEmitter, edge2), AT(GpuEmitter, radiance), AT(GpuEmitter, kind),
         AT(GpuEmitter, radius), AT(GpuEmitter, pmf), AT(GpuEmitter, cdf),
         AT(GpuEmitter, image_begin), AT(GpuEmitter, image_count),
-        AT(GpuEmitter, pad0), AT(GpuEmitter, pad1)},
+        AT(GpuEmitter, antipodal_pairs), AT(GpuEmitter, pad1)},
        sizeof(GpuEmitter)},
       {"LightImage", {AT(GpuLightImage, isometry), AT(GpuLightImage, center)},
        sizeof(GpuLightImage)},

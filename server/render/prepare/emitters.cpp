@@ -68,6 +68,25 @@ void keep_nearest(std::vector<Image>& images) {
   images.resize(std::min(images.size(), kMaxImagesPerEmitter));
 }
 
+// Where the group holds -1 every image c of a point light comes with -c, and the two weigh
+// the same up to the side of the surface they lie on: I |cos| / A(d) with A(pi - d) = A(d) in
+// S3, the one in front taking it all. Light sampling then weighs a pair as one image
+// (shaders/lights/emitters.glsl): the nearer of each pair is kept, so that kMaxImagesPerEmitter
+// pairs cover twice as many images. Before, the Poincare space's 120 were cut to the nearest 64,
+// and the light of the far ones, in front wherever their near antipodes are behind, was lost:
+// its default scene was 25-29 % too dark at depth 0.
+std::vector<Image> antipodal_representatives(std::vector<Image> images) {
+  std::stable_sort(images.begin(), images.end(),
+                   [](const Image& a, const Image& b) { return a.distance < b.distance; });
+  std::vector<Image> kept;
+  for (const Image& image : images)
+    if (std::none_of(kept.begin(), kept.end(), [&](const Image& other) {
+          return max_abs(other.center + image.center) <= 1e-9;
+        }))
+      kept.push_back(image);
+  return kept;
+}
+
 bool same_horosphere(const Vec4& a, const Vec4& b) {
   return max_abs(a - b) <= 1e-7 * max_abs(a);
 }
@@ -250,9 +269,9 @@ EmitterTable build_emitters(const Scene& scene) {
   // x and -x are copies of one point: every geodesic from a surface point that runs past pi
   // crosses the copy of its own surface at the antipode. The long way round then brings no
   // light, and light sampling leaves it out (sampling it only costs variance).
-  if (k == GeometryKind::Spherical && table.cutoff > kPi &&
-      std::any_of(group.begin(), group.end(), is_antipodal_map))
-    table.cutoff = kPi;
+  const bool antipodal =
+      k == GeometryKind::Spherical && std::any_of(group.begin(), group.end(), is_antipodal_map);
+  if (antipodal && table.cutoff > kPi) table.cutoff = kPi;
   for (const PointLight& light : scene.lights) {
     Emitting e;
     e.gpu.kind = uint32_t(EmitterKind::Point);
@@ -309,6 +328,11 @@ EmitterTable build_emitters(const Scene& scene) {
       for (const Mat4& g : group) {
         const double d = model::geodesic_distance(k, model::origin(), g * c);
         if (d <= table.cutoff) e.images.push_back({d, g, g * c});
+      }
+      // Within a cutoff of pi every image's antipode is within it too.
+      if (antipodal && table.cutoff >= kPi && e.gpu.kind == uint32_t(EmitterKind::Point)) {
+        e.images = antipodal_representatives(std::move(e.images));
+        e.gpu.antipodal_pairs = 1;
       }
       keep_nearest(e.images);
     }
