@@ -141,9 +141,11 @@ struct Cell {
   // Its shape refs, shape refs [shape_begin, shape_begin + shape_count) (SHAPE_LIST).
   uint shape_begin;
   uint shape_count;
+  // The first listed_hull_pairs of its pairs and listed_hull_lone of its lone triangles lie on
+  // the scene's hull: no shadow segment crosses them (render/prepare/triangle_list.h).
+  uint listed_hull_pairs;
+  uint listed_hull_lone;
   uint pad0;
-  uint pad1;
-  uint pad2;
 };
 
 // What a segment of a cell that lists its triangles tests (TRIANGLE_LIST,

@@ -18,10 +18,12 @@ ChartHit nearestListedTriangle(uint cell, vec3 o, vec3 d, float sMax, bool anyHi
   // A segment that passes beside them all (most, where the triangles are a small object in a
   // large cell) tests none.
   if (!segmentMeetsBox(c.triangle_lo.xyz, c.triangle_hi.xyz, o, d, sMax)) return best;
-  // The cell's parallelograms (render/prepare/triangle_list.h), then its lone triangles.
+  // The cell's parallelograms (render/prepare/triangle_list.h), then its lone triangles; a
+  // shadow segment skips those on the scene's hull, which it cannot cross (listed first).
   float oScale = max(max(abs(o.x), abs(o.y)), abs(o.z));
   uint pairsEnd = c.listed_begin + c.listed_pairs, end = c.listed_begin + c.listed_count;
-  for (uint i = c.listed_begin; i < pairsEnd; ++i) {
+  uint loneBegin = pairsEnd + (anyHit ? c.listed_hull_lone : 0u);
+  for (uint i = c.listed_begin + (anyHit ? c.listed_hull_pairs : 0u); i < pairsEnd; ++i) {
     uint t = listed[i].triangle;
     vec2 ab;
     float s = intersectChartParallelogram(o, d, oScale, positions[3u * t].xyz,
@@ -34,9 +36,9 @@ ChartHit nearestListedTriangle(uint cell, vec3 o, vec3 d, float sMax, bool anyHi
                                    vec2(ab.x, ab.y - ab.x));
     if (anyHit) return best;
   }
-  if (pairsEnd == end) return best;
+  if (loneBegin == end) return best;
   ShearedLine line = shearLine(d);
-  for (uint i = pairsEnd; i < end; ++i) {
+  for (uint i = loneBegin; i < end; ++i) {
     uint t = listed[i].triangle;
     vec2 uv;
     float s = intersectChartTriangle(line, o, positions[3u * t].xyz, positions[3u * t + 1u].xyz,

@@ -1,7 +1,9 @@
 // The primitives a cell lists for TRIANGLE_LIST (render/prepare/triangle_list.h): two triangles
 // that make a parallelogram are one primitive, every other triangle is its own, each triangle
 // is listed exactly once, pairs come before lone triangles, and a cell of more triangles than
-// the list's limit lists none.
+// the list's limit lists none. Those on the scene's hull, which shadow segments skip, come
+// first: in the Cornell box its floor and three walls and not its ceiling (the light above it);
+// none where something crosses their plane, nor in a quotient.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -61,6 +63,45 @@ TEST(TriangleList, TheCornellBoxsSixteenTrianglesAreEightParallelograms) {
   EXPECT_EQ(packed.cell_geometry[0].triangle_count, 16u);
   EXPECT_EQ(packed.cells[0].listed_count, 8u);
   EXPECT_EQ(check_listing(packed, 0), 8u);
+  // The floor, back wall and two side walls on the hull, first; the four pieces of the ceiling
+  // round its window (y = 1), with the light at y = 1.3 beyond their plane, after them.
+  const gpu::Cell& cell = packed.cells[0];
+  EXPECT_EQ(cell.listed_hull_pairs, 4u);
+  EXPECT_EQ(cell.listed_hull_lone, 0u);
+  for (uint32_t i = 0; i < cell.listed_pairs; ++i) {
+    const GpuListedPrimitive& l = packed.listed[cell.listed_begin + i];
+    bool ceiling = true;
+    for (int k = 0; k < 3; ++k) ceiling = ceiling && corner(packed, l.triangle, k).y == 1.0;
+    EXPECT_EQ(ceiling, i >= cell.listed_hull_pairs) << "listed " << i;
+  }
+}
+
+// A quad floor under a sphere and a light: on the hull, unless a sphere reaches below it or
+// the space is a quotient.
+TEST(TriangleList, APlaneIsOnTheHullOnlyWithEverythingOnOneSide) {
+  const auto floor_under = [](double sphere_y, const std::string& more = "") {
+    const auto doc = nlohmann::ordered_json::parse(R"({
+      "geometry": "euclidean", "camera": {"position": [0, 0, 9]}, "materials": {"m": {}},
+      "objects": [
+        {"type": "quad", "material": "m", "corner": [-1, 0, -1], "edge_u": [0, 0, 2],
+         "edge_v": [2, 0, 0]},
+        {"type": "sphere", "material": "m", "center": [0, )" + std::to_string(sphere_y) +
+        R"(, 0], "radius": 0.5})" + more + R"(],
+      "lights": [{"type": "point", "position": [0, 3, 0], "intensity": 1}]})");
+    const PackedScene packed = pack_scene(parse_scene(doc, {}));
+    EXPECT_EQ(packed.cells[0].listed_pairs, 1u);
+    return packed.cells[0].listed_hull_pairs;
+  };
+  EXPECT_EQ(floor_under(0.5), 1u);  // resting on it
+  EXPECT_EQ(floor_under(0.4), 0u);  // sunk 0.1 below it
+  // A small sphere beside it, across its plane.
+  EXPECT_EQ(floor_under(0.5, R"(, {"type": "sphere", "material": "m", "center": [3, 0, 0],
+                                    "radius": 0.01})"),
+            0u);
+  const PackedScene torus =
+      pack_scene(load_scene_file(fs::path(GEODESIC_SOURCE_DIR) / "scenes/torus-cornell.json"));
+  for (const gpu::Cell& cell : torus.cells)
+    EXPECT_EQ(cell.listed_hull_pairs + cell.listed_hull_lone, 0u);
 }
 
 TEST(TriangleList, QuadsAndARotatedBoxPairUpAndAPolygonsFanStaysLone) {

@@ -288,6 +288,8 @@ PackedScene pack_scene(const Scene& scene) {
     packed.listed_begin = uint32_t(out.listed.size());
     packed.listed_pairs = list_cell_triangles(g.first_triangle, g.triangle_count, out);
     packed.listed_count = uint32_t(out.listed.size()) - packed.listed_begin;
+    list_hull_first(k == GeometryKind::Euclidean, cell, g.first_triangle, g.triangle_count,
+                    g.shape_ref_count > 0, out, packed);
     packed.sphere_begin = g.first_sphere_ref;
     packed.sphere_count = g.sphere_ref_count;
     packed.shape_begin = g.first_shape_ref;
