@@ -93,7 +93,7 @@ PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
                                 [](const CellGeometry& g) {
                                   return g.triangle_count <= kTriangleListLength;
                                 });
-  f.single_cell = f.crossing != Crossing::None && packed.cells.size() == 1;
+  f.single_cell = packed.cells.size() == 1;
   f.smooth_normals = std::any_of(packed.triangles.begin(), packed.triangles.end(),
                                  [](const GpuTriangle& t) { return t.smooth_normals != 0; });
   f.paper = scene.render.lighting == LightingModel::Paper;
