@@ -79,21 +79,25 @@ TEST(TriangleList, TheCornellBoxsSixteenTrianglesAreEightParallelograms) {
 // A quad floor under a sphere and a light: on the hull, unless a sphere reaches below it or
 // the space is a quotient.
 TEST(TriangleList, APlaneIsOnTheHullOnlyWithEverythingOnOneSide) {
-  const auto floor_under = [](double sphere_y, const std::string& more = "") {
+  const auto floor_under = [](double sphere_y, const std::string& more = "", double lift = 0) {
     const auto doc = nlohmann::ordered_json::parse(R"({
       "geometry": "euclidean", "camera": {"position": [0, 0, 9]}, "materials": {"m": {}},
       "objects": [
-        {"type": "quad", "material": "m", "corner": [-1, 0, -1], "edge_u": [0, 0, 2],
-         "edge_v": [2, 0, 0]},
-        {"type": "sphere", "material": "m", "center": [0, )" + std::to_string(sphere_y) +
+        {"type": "quad", "material": "m", "corner": [-1, )" + std::to_string(lift) +
+        R"(, -1], "edge_u": [0, 0, 2], "edge_v": [2, 0, 0]},
+        {"type": "sphere", "material": "m", "center": [0, )" + std::to_string(lift + sphere_y) +
         R"(, 0], "radius": 0.5})" + more + R"(],
-      "lights": [{"type": "point", "position": [0, 3, 0], "intensity": 1}]})");
+      "lights": [{"type": "point", "position": [0, )" + std::to_string(lift + 3) +
+        R"(, 0], "intensity": 1}]})");
     const PackedScene packed = pack_scene(parse_scene(doc, {}));
     EXPECT_EQ(packed.cells[0].listed_pairs, 1u);
     return packed.cells[0].listed_hull_pairs;
   };
   EXPECT_EQ(floor_under(0.5), 1u);  // resting on it
   EXPECT_EQ(floor_under(0.4), 0u);  // sunk 0.1 below it
+  // The same a thousand units up, where the tolerance grows with the coordinates.
+  EXPECT_EQ(floor_under(0.5, "", 1000), 1u);
+  EXPECT_EQ(floor_under(0.49, "", 1000), 0u);
   // A small sphere beside it, across its plane.
   EXPECT_EQ(floor_under(0.5, R"(, {"type": "sphere", "material": "m", "center": [3, 0, 0],
                                     "radius": 0.01})"),
