@@ -1,10 +1,12 @@
 // The catalogue's bundled scenes (scenes/catalogue/<name>.json, spaces known only by their
-// generators): each renders without a non-finite sample and shows its spheres (a closed E3 or H3
-// space at the largest crossing cap, few of its geodesics cut off there), and camera rays
-// traced in double precision across the faces always land back inside the Dirichlet domain
-// (inside the cell they continue in, for domains cut into pieces charted apart).
+// generators): each renders without a non-finite sample, at its own depth and at depth 64, and
+// shows its spheres (a closed E3 or H3 space at the largest crossing cap, few of its geodesics
+// cut off there), and camera rays traced in double precision across the faces always land back
+// inside the Dirichlet domain (inside the cell they continue in, for domains cut into pieces
+// charted apart).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "twins/cell_tracer.h"
@@ -79,6 +81,7 @@ TEST(CatalogueScenes, RenderFiniteAndEveryRayEndsInTheCell) {
     const bool thin = entry.name.starts_with("coxeter-") || entry.name.ends_with("-amphicosm");
     const int size = 24, spp = 4;
     scene.render.width = scene.render.height = size;
+    scene.render.russian_roulette = false;  // the depth-64 paths below run their full length
     try {
       Renderer renderer(device(), scene);
       renderer.add_samples(spp);
@@ -91,6 +94,15 @@ TEST(CatalogueScenes, RenderFiniteAndEveryRayEndsInTheCell) {
         for (int x = 0; x < size; ++x)
           lit += image.at(x, y, 0) + image.at(x, y, 1) + image.at(x, y, 2) > 0.05;
       EXPECT_GT(lit, size * size / 12) << "the spheres and their copies should fill part of the view";
+      // Paths of 64 bounces, each bounce's geodesics up to the crossing cap: no sample may
+      // come out NaN or infinite, however long the walk.
+      renderer.set_max_depth(64);
+      renderer.reset();
+      renderer.add_samples(2);
+      EXPECT_EQ(renderer.non_finite_samples(), 0u) << "at depth 64";
+      const auto& rgb = renderer.image().rgb;
+      EXPECT_EQ(std::count_if(rgb.begin(), rgb.end(), [](float v) { return !std::isfinite(v); }), 0)
+          << "non-finite pixel values at depth 64";
     } catch (const std::exception& e) {
       ADD_FAILURE() << "render failed: " << e.what();  // and go on with the next entry
     }
