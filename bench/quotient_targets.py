@@ -1,0 +1,140 @@
+#!/usr/bin/env python3
+"""Issue 15's targets for the quotient spaces, measured in one invocation and printed as one
+table against their thresholds (docs/benchmarks.md, "Quotient spaces against the Cornell box"):
+
+  paths/s    every scene `geodesic_bench --quotients` samples, at 512², each at its own depth,
+             >= 0.5x the Cornell box's paths/s in the same run;
+  still 5 %  from a still camera at 512² (`geodesic_bench_walkthrough`), the mirrored
+             dodecahedron and the Poincaré sphere reach 5 % estimated error within 30 s (when
+             the 60-s still phase ends above 5 %, extrapolated along t^-1/2 and marked ~);
+  t(1 %)     time to 1 % true error at 64x64 (`bench/convergence.sh`), every quotient within
+             3x the Cornell box's (marked ~ where the tool extrapolated it).
+
+  python3 bench/quotient_targets.py [--build DIR] [--device SEL] [--time S] [--ref-time S]
+                                    [--only paths,still,convergence]
+
+Each figure is the tool's own printed one: this script runs the three tools one after the other
+(about 20 minutes on a 2-core lavapipe machine, with the convergence references cached in
+BUILD/bench-cache) and reads what they print. --device goes to the two binaries that take it;
+bench/convergence.sh renders on the default device.
+"""
+import argparse
+import os
+import re
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+STILL_SCENES = ["cornell-box", "mirrored-dodecahedron", "poincare-sphere"]
+
+
+def run(command):
+    print("$ " + " ".join(command), file=sys.stderr, flush=True)
+    result = subprocess.run(command, cwd=ROOT, stdout=subprocess.PIPE, text=True)
+    if result.returncode != 0:
+        sys.exit(f"quotient_targets: {command[0]} failed ({result.returncode})")
+    sys.stderr.write(result.stdout)
+    return result.stdout
+
+
+def paths_per_second(build, device):
+    """{scene: (M paths/s, x Cornell)} from geodesic_bench --quotients at 512²."""
+    command = [f"{build}/bench/geodesic_bench", "--quotients", "--size", "512", "--spp", "2",
+               "--repeat", "2"] + (["--device", device] if device else [])
+    rows = {}
+    for line in run(command).splitlines():
+        fields = line.split()
+        if len(fields) == 8 and fields[3].replace(".", "", 1).isdigit():
+            rows[fields[0]] = (float(fields[3]), float(fields[7]))
+    return rows
+
+
+def still_view(build, device, scene):
+    """(seconds to 5 %, extrapolated?) from a still camera at 512²."""
+    command = [f"{build}/bench/geodesic_bench_walkthrough", scene, "--width", "512", "--height",
+               "512"] + (["--device", device] if device else [])
+    out = run(command)
+    reached = re.search(r"still -> error < 5%:\s+([\d.]+) s", out)
+    if reached:
+        return float(reached.group(1)), False
+    missed = re.search(r"still -> error < 5%:\s+not in ([\d.]+) s \(([\d.]+) %", out)
+    if not missed:
+        sys.exit(f"quotient_targets: no still-view figure for {scene}")
+    seconds, error = float(missed.group(1)), float(missed.group(2))
+    return seconds * (error / 5) ** 2, True
+
+
+def scene_file(name):
+    for path in (f"scenes/{name}.json", f"scenes/catalogue/{name}.json"):
+        if os.path.exists(os.path.join(ROOT, path)):
+            return path
+    sys.exit(f"quotient_targets: no scene file for {name}")
+
+
+def time_to_one_percent(build, names, seconds, ref_seconds):
+    """{scene: (t(1 %) in s, extrapolated?)} at 64x64."""
+    command = ["bash", "bench/convergence.sh", "--build", build, "--time", str(seconds),
+               "--ref-time", str(ref_seconds)] + [scene_file(n) for n in names]
+    times = {}
+    for line in run(command).splitlines():
+        # scene size ref spp slope (cpu) (spp) t(5%) t(1%) ...; a time is "X s" or "X s (extrap.)"
+        m = re.match(r"(\S+)\s+\d+x\d+\s+\d+\s+\d+(?:\s+\S+){3}\s+(?:[\d.e+-]+ s(?: \(extrap\.\))?)"
+                     r"\s+([\d.e+-]+) s( \(extrap\.\))?", line)
+        if m:
+            times[m.group(1)] = (float(m.group(2)), bool(m.group(3)))
+    return times
+
+
+def verdict(ok):
+    return "met" if ok else "NOT MET"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--build", default="build")
+    parser.add_argument("--device", default="")
+    parser.add_argument("--time", type=float, default=15, help="convergence test run, s")
+    parser.add_argument("--ref-time", type=float, default=45, help="convergence reference, s")
+    parser.add_argument("--only", default="paths,still,convergence")
+    args = parser.parse_args()
+    parts = set(args.only.split(","))
+    build = os.path.abspath(args.build)
+
+    paths = paths_per_second(build, args.device) if "paths" in parts else {}
+    still = {s: still_view(build, args.device, s) for s in STILL_SCENES} if "still" in parts else {}
+    names = list(paths) or ["cornell-box", "mirrored-dodecahedron", "seifert-weber",
+                            "poincare-sphere", "torus-cornell", "quarter-turn-space", "lens-7-3",
+                            "coxeter-5-3-4", "figure-eight-knot", "whitehead-link"]
+    converge = (time_to_one_percent(build, names, args.time, args.ref_time)
+                if "convergence" in parts else {})
+
+    def mark(value, extrapolated):
+        return ("~" if extrapolated else "") + f"{value:.3g} s"
+
+    print(f"\n{'scene':<24} {'M paths/s':>9} {'x Cornell':>9} {'>= 0.5':>8}   "
+          f"{'t(1 %) 64²':>11} {'x Cornell':>9} {'<= 3':>8}   {'still 5 % 512²':>14} {'<= 30 s':>8}")
+    base = converge.get("cornell-box")
+    for name in names:
+        cells = []
+        if name in paths:
+            rate, ratio = paths[name]
+            cells.append(f"{rate:>9.3f} {ratio:>9.3f} "
+                         f"{'' if name == 'cornell-box' else verdict(ratio >= 0.5):>8}")
+        else:
+            cells.append(" " * 28)
+        if name in converge and base:
+            t, extrapolated = converge[name]
+            ratio = t / base[0]
+            cells.append(f"{mark(t, extrapolated):>11} {ratio:>9.2f} "
+                         f"{'' if name == 'cornell-box' else verdict(ratio <= 3):>8}")
+        else:
+            cells.append(" " * 30)
+        if name in still:
+            t, extrapolated = still[name]
+            cells.append(f"{mark(t, extrapolated):>14} "
+                         f"{'' if name == 'cornell-box' else verdict(t <= 30):>8}")
+        print(f"{name:<24} " + "   ".join(cells).rstrip())
+
+
+if __name__ == "__main__":
+    main()
