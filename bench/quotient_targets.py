@@ -14,8 +14,8 @@ table against their thresholds (docs/benchmarks.md, "Quotient spaces against the
                                     [--only paths,still,convergence]
 
 Each figure is the tool's own printed one: this script runs the three tools one after the other
-(about 20 minutes on a 2-core lavapipe machine, with the convergence references cached in
-BUILD/bench-cache) and reads what they print. --device goes to the two binaries that take it;
+(on a 2-core lavapipe machine about 10 minutes with the convergence references cached in
+BUILD/bench-cache, 20 without) and reads what they print. --device goes to the two binaries that take it;
 bench/convergence.sh renders on the default device.
 """
 import argparse
