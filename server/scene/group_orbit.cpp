@@ -124,7 +124,17 @@ GroupOrbit::Key GroupOrbit::key(const Vec4& p, int corner) const {
 
 int GroupOrbit::find(const Vec4& point) const {
   const double tolerance = kSamePoint * size_of(point);
+  // A point within `tolerance` of this one lies in the next cell along axis i only if this one
+  // lies that near the side of its cell: look there alone (usually one cell, not 16). Twice
+  // the tolerance, for the rounding of the fractions.
+  const double x[4] = {point.x, point.y, point.z, point.w};
+  int near_sides = 0;
+  for (int i = 0; i < 4; ++i) {
+    const double s = x[i] / kCell, f = s - std::floor(s);
+    if (std::min(f, 1 - f) * kCell < 2 * tolerance) near_sides |= 1 << i;
+  }
   for (int corner = 0; corner < 16; ++corner) {
+    if (corner & ~near_sides) continue;
     const auto it = grid_.find(key(point, corner));
     if (it == grid_.end()) continue;
     for (int i : it->second)
