@@ -11,12 +11,13 @@ table against their thresholds (docs/benchmarks.md, "Quotient spaces against the
              3x the Cornell box's (marked ~ where the tool extrapolated it).
 
   python3 bench/quotient_targets.py [--build DIR] [--device SEL] [--time S] [--ref-time S]
-                                    [--only paths,still,convergence]
+                                    [--skip still,convergence]
 
 Each figure is the tool's own printed one: this script runs the three tools one after the other
 (on a 2-core lavapipe machine about 10 minutes with the convergence references cached in
-BUILD/bench-cache, 20 without) and reads what they print. --device goes to the two binaries that take it;
-bench/convergence.sh renders on the default device.
+BUILD/bench-cache, 20 without) and reads what they print. The scenes are those geodesic_bench
+--quotients measures, so that part always runs; --skip leaves out the others. --device goes to
+the two binaries that take it; bench/convergence.sh renders on the default device.
 """
 import argparse
 import os
@@ -95,18 +96,16 @@ def main():
     parser.add_argument("--device", default="")
     parser.add_argument("--time", type=float, default=15, help="convergence test run, s")
     parser.add_argument("--ref-time", type=float, default=45, help="convergence reference, s")
-    parser.add_argument("--only", default="paths,still,convergence")
+    parser.add_argument("--skip", default="", help="still and/or convergence, comma-separated")
     args = parser.parse_args()
-    parts = set(args.only.split(","))
+    skip = set(args.skip.split(","))
     build = os.path.abspath(args.build)
 
-    paths = paths_per_second(build, args.device) if "paths" in parts else {}
-    still = {s: still_view(build, args.device, s) for s in STILL_SCENES} if "still" in parts else {}
-    names = list(paths) or ["cornell-box", "mirrored-dodecahedron", "seifert-weber",
-                            "poincare-sphere", "torus-cornell", "quarter-turn-space", "lens-7-3",
-                            "coxeter-5-3-4", "figure-eight-knot", "whitehead-link"]
+    paths = paths_per_second(build, args.device)
+    names = list(paths)
+    still = {s: still_view(build, args.device, s) for s in STILL_SCENES} if "still" not in skip else {}
     converge = (time_to_one_percent(build, names, args.time, args.ref_time)
-                if "convergence" in parts else {})
+                if "convergence" not in skip else {})
 
     def mark(value, extrapolated):
         return ("~" if extrapolated else "") + f"{value:.3g} s"
@@ -116,12 +115,9 @@ def main():
     base = converge.get("cornell-box")
     for name in names:
         cells = []
-        if name in paths:
-            rate, ratio = paths[name]
-            cells.append(f"{rate:>9.3f} {ratio:>9.3f} "
-                         f"{'' if name == 'cornell-box' else verdict(ratio >= 0.5):>8}")
-        else:
-            cells.append(" " * 28)
+        rate, ratio = paths[name]
+        cells.append(f"{rate:>9.3f} {ratio:>9.3f} "
+                     f"{'' if name == 'cornell-box' else verdict(ratio >= 0.5):>8}")
         if name in converge and base:
             t, extrapolated = converge[name]
             ratio = t / base[0]

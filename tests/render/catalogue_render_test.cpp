@@ -100,8 +100,10 @@ TEST(CatalogueScenes, RenderFiniteAndEveryRayEndsInTheCell) {
       renderer.reset();
       renderer.add_samples(2);
       EXPECT_EQ(renderer.non_finite_samples(), 0u) << "at depth 64";
-      const auto& rgb = renderer.image().rgb;
-      EXPECT_EQ(std::count_if(rgb.begin(), rgb.end(), [](float v) { return !std::isfinite(v); }), 0)
+      const Image deep = renderer.image();
+      EXPECT_EQ(std::count_if(deep.rgb.begin(), deep.rgb.end(),
+                              [](float v) { return !std::isfinite(v); }),
+                0)
           << "non-finite pixel values at depth 64";
     } catch (const std::exception& e) {
       ADD_FAILURE() << "render failed: " << e.what();  // and go on with the next entry
