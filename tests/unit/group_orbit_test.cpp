@@ -1,0 +1,66 @@
+// GroupOrbit::find, which tells a newly enumerated element from one already known by its image
+// of the origin: every point within the tolerance (1e-7 of the point's size) of a known image is
+// that element, wherever the two fall in the hash grid, and a point a few tolerances away is
+// none. The integer lattice of E3 puts every image exactly on the sides of its grid cell, on
+// all four axes at once; in H3 the mirrored right-angled dodecahedron's images go out to
+// coordinates of about 27.
+#include "scene/group_orbit.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "scene/manifold.h"
+
+namespace geodesic {
+namespace {
+
+double tolerance_at(const Vec4& p) {
+  return 1e-7 * std::max({1.0, std::abs(p.x), std::abs(p.y), std::abs(p.z), std::abs(p.w)});
+}
+
+Vec4 shifted(const Vec4& p, int signs, double by) {
+  Vec4 q = p;
+  double* c[4] = {&q.x, &q.y, &q.z, &q.w};
+  for (int i = 0; i < 4; ++i) *c[i] += (signs >> i & 1 ? by : -by);
+  return q;
+}
+
+void expect_found_across_cell_sides(const GroupOrbit& orbit) {
+  for (std::size_t i = 0; i < orbit.elements().size(); ++i) {
+    const Vec4& p = orbit.elements()[i].point;
+    const double tolerance = tolerance_at(p);
+    ASSERT_EQ(orbit.find(p), int(i));
+    for (int signs = 0; signs < 16; ++signs) {
+      // Within the tolerance on every axis at once (max-norm), on either side of each.
+      EXPECT_EQ(orbit.find(shifted(p, signs, 0.45 * tolerance)), int(i)) << i << " " << signs;
+      EXPECT_EQ(orbit.find(shifted(p, signs, 3 * tolerance)), -1) << i << " " << signs;
+    }
+  }
+}
+
+TEST(GroupOrbit, FindsAnImageOfTheOriginFromEverySideOfItsGridCell) {
+  // Z3 within 2.5: the 81 lattice points (x, y, z, 1), each on a corner of its grid cell.
+  std::vector<Mat4> generators;
+  for (const Vec3& axis : {Vec3{1, 0, 0}, Vec3{0, 1, 0}, Vec3{0, 0, 1}})
+    generators.push_back(model::translation(GeometryKind::Euclidean, axis));
+  const GroupOrbit orbit(GeometryKind::Euclidean, generators, 100000, 2.5);
+  ASSERT_EQ(orbit.elements().size(), 81u);
+  expect_found_across_cell_sides(orbit);
+}
+
+TEST(GroupOrbit, FindsImagesFarOutInH3) {
+  // The reflections in the right-angled dodecahedron's faces, images out to distance 4.
+  std::vector<Mat4> generators;
+  for (const auto& face : make_mirrored_dodecahedron().faces) generators.push_back(face.pairing);
+  const GroupOrbit orbit(GeometryKind::Hyperbolic, generators, 200000, 4.0);
+  ASSERT_GT(orbit.elements().size(), 1000u);
+  double farthest = 0;
+  for (const GroupElement& e : orbit.elements()) farthest = std::max(farthest, e.point.w);
+  EXPECT_GT(farthest, 20.0);
+  expect_found_across_cell_sides(orbit);
+}
+
+}  // namespace
+}  // namespace geodesic
