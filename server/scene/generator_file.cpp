@@ -115,6 +115,50 @@ std::vector<RawMatrix> read_gen(std::string_view text, const std::string& source
   return out;
 }
 
+// Refuses anything inside a row (an innermost [...]) that is not part of an entry: a word
+// other than an exponent or an imaginary unit (`units`: Moebius text only), or a character
+// other than digits, signs, '.', '*', separators (whitespace , ; ( )). Words outside rows
+// ("Matrix", "conj") stay separators. `rows_per_matrix` numbers the matrix in the error.
+void check_rows(std::string_view text, const std::string& source, bool units,
+                std::size_t rows_per_matrix) {
+  auto is_alpha = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; };
+  auto is_digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
+  std::size_t open = std::string_view::npos, rows = 0;
+  int line = 1, open_line = 1;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (i % 4096 == 4095) check_preparation_budget();
+    const char c = text[i];
+    if (c == '\n') ++line;
+    if (c == '[') open = i, open_line = line;
+    if (c != ']' || open == std::string_view::npos) continue;
+    const std::string_view row = text.substr(open + 1, i - open - 1);
+    int at = open_line;
+    for (std::size_t k = 0; k < row.size(); ++k) {
+      const char r = row[k];
+      if (r == '\n') ++at;
+      const bool after_number = k > 0 && (is_digit(row[k - 1]) || row[k - 1] == '.');
+      const bool exponent = (r == 'e' || r == 'E') && after_number && k + 1 < row.size() &&
+                            (is_digit(row[k + 1]) || row[k + 1] == '+' || row[k + 1] == '-');
+      std::size_t end = k + 1;
+      if (is_alpha(r) && !exponent)
+        while (end < row.size() && (is_alpha(row[end]) || is_digit(row[end]))) ++end;
+      const std::string_view word = row.substr(k, end - k);
+      const bool unit = units && (word == "I" || word == "i" || word == "j");
+      const bool allowed = is_alpha(r) ? exponent || unit
+                                       : is_digit(r) || std::isspace(static_cast<unsigned char>(r)) ||
+                                             std::string_view("+-.*,;()").find(r) != std::string_view::npos;
+      if (!allowed)
+        fail(source, rows / rows_per_matrix, at,
+             "\"" + std::string(word.substr(0, 40)) + "\" inside [" +
+                 std::string(row.substr(0, 60)) + (row.size() > 60 ? "..." : "") +
+                 "] is not part of a number");
+      k = end - 1;
+    }
+    open = std::string_view::npos;
+    ++rows;
+  }
+}
+
 // SnapPy: every number in the text, 16 to a matrix, row by row, time coordinate first.
 std::vector<RawMatrix> read_snappy(std::string_view text, const std::string& source) {
   std::vector<double> values;
@@ -216,10 +260,13 @@ GeneratorSet parse_generators(std::string_view text, const std::string& source) 
   const std::string bare = without_comments(without_bom(text));
   std::vector<RawMatrix> raw;
   if (looks_like_moebius(bare)) {
+    check_rows(bare, source, true, 2);
     for (const MoebiusText& m : read_moebius(bare, source))
       raw.push_back({moebius_isometry(m.t), m.line});
   } else {
-    raw = bare.find('[') != std::string::npos ? read_snappy(bare, source) : read_gen(bare, source);
+    const bool snappy = bare.find('[') != std::string::npos;
+    if (snappy) check_rows(bare, source, false, 4);
+    raw = snappy ? read_snappy(bare, source) : read_gen(bare, source);
   }
   GeneratorSet set = classify(raw, source);
   set.title = first_comment(without_bom(text));

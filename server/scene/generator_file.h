@@ -34,10 +34,12 @@ struct GeneratorSet {
 inline constexpr double kGeneratorTolerance = 1e-6;
 
 // Parses any format (Moebius when the first [...] row holds two entries, else SnapPy's O(3,1)
-// when the text contains '['). `source` names the text in
-// errors, which throw SceneError as "<source>: matrix <i> (line <l>): <reason>": not 4x4,
-// not a number, NaN or infinite, not an isometry of any model, or geometries that differ
-// between matrices. A text without matrices is an error too (the whole space needs none).
+// when the text contains '['). `source` names the text in errors, which throw SceneError as
+// "<source>: matrix <i> (line <l>): <reason>": not 4x4, not a number, NaN or infinite, a word
+// or character inside a row's [...] that is not part of an entry (junk is refused by name
+// here, not left to the group's enumeration), not an isometry of any model, or geometries
+// that differ between matrices. A text without matrices is an error too (the whole space
+// needs none).
 GeneratorSet parse_generators(std::string_view text, const std::string& source);
 // The same checks for matrices already in our convention (errors name no line).
 GeneratorSet generator_set(const std::vector<Mat4>& generators, const std::string& source);

@@ -8,8 +8,10 @@
 // Entries are real numbers, imaginary ones (a suffix i, j, I, *i, *j or *I; a bare unit), or a
 // real and an imaginary one joined by + or - with spaces on both sides of the sign or on
 // neither ("0.5 - 0.87*I", "0.5-0.87i"; "0.5 -0.87i" is two entries). Commas, parentheses and
-// other words are separators. Four entries make a matrix, row by row; the word `conj` before a
-// matrix makes it orientation-reversing (z -> (a conj z + b) / (c conj z + d)).
+// other words are separators between rows; inside a row's brackets anything that is not part
+// of an entry is refused by parse_generators (scene/generator_file.h). Four entries make a
+// matrix, row by row; the word `conj` before a matrix makes it orientation-reversing
+// (z -> (a conj z + b) / (c conj z + d)).
 #pragma once
 
 #include <string>

@@ -107,6 +107,28 @@ TEST(GeneratorFile, ReadsSnapPyPairingMatrices) {
             std::string::npos);
 }
 
+// Junk inside a row (a request's bytes pasted into an entry, a word, a stray character) is
+// refused by name while reading, in either bracket format; words between rows are not rows.
+TEST(GeneratorFile, RefusesJunkInsideARowByName) {
+  EXPECT_EQ(error_of("[[1, 1], [0, 1]]\n[[5 - 0.866OST /api/j{aobs 025403784scene*I  1], [0, 1]]"),
+            "test.gen: matrix 2 (line 2): \"OST\" inside [5 - 0.866OST /api/j{aobs "
+            "025403784scene*I  1] is not part of a number");
+  EXPECT_NE(error_of("[[1, 1], [0, 1]]\n[[1, 0], [0.5 / 2, 1]]").find("matrix 2 (line 2): \"/\""),
+            std::string::npos);
+  EXPECT_NE(error_of("[[1, nan], [0, 1]]").find("\"nan\" inside [1, nan]"), std::string::npos);
+  EXPECT_NE(error_of("[[1, 0, 0, 0], [0, 1, 0, 0],\n [0, 0, 1, 0], [0, 0, 0, 1]],\n"
+                     "[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0],\n [0, x1, 0, 1]]")
+                .find("matrix 2 (line 4): \"x1\" inside [0, x1, 0, 1]"),
+            std::string::npos);
+  // An imaginary unit is no part of an O(3,1) entry.
+  EXPECT_NE(error_of("[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 2*I, 1]]").find("\"I\""),
+            std::string::npos);
+  // Exponents, units, Python's complex literals and words outside rows still read.
+  const GeneratorSet set = parse_generators(
+      "G = [Matrix([[1, 1.5e-1j], [0, 1]]), conj Matrix([[(1+0j), 0], [0, 1E+0]])]", "m.txt");
+  EXPECT_EQ(set.generators.size(), 2u);
+}
+
 TEST(GeneratorFile, FormatRoundTrips) {
   const CatalogueEntry& e = *find_catalogue_entry("binary-icosahedral");
   const GeneratorSet set = parse_generators(format_gen(e.generators, "header\n\nmore"), "x");
