@@ -1,5 +1,5 @@
 // The web walkthrough's view of the canvas (walkthrough.test.mjs): its pixels reduced to a grid
-// of block-mean luminances, and the mean difference of two such grids.
+// of block-mean luminances, the mean difference of two such grids, and its raw sRGB codes.
 
 import assert from 'node:assert/strict';
 
@@ -33,3 +33,19 @@ export function meanAbsDiff(a, b) {
   assert.equal(a.blocks.length, b.blocks.length);
   return a.blocks.reduce((s, v, i) => s + Math.abs(v - b.blocks[i]), 0) / a.blocks.length;
 }
+
+// The canvas's RGB codes, and sRGB codes to linear values and back.
+export const canvasCodes = (p) =>
+  p.evaluate(() => {
+    const c = document.getElementById('view');
+    const { data } = c.getContext('2d').getImageData(0, 0, c.width, c.height);
+    return Array.from(data).filter((_, i) => i % 4 !== 3);
+  });
+export const toLinear = (code) => {
+  const s = code / 255;
+  return s <= 0.04045 ? s / 12.92 : ((s + 0.055) / 1.055) ** 2.4;
+};
+export const toCode = (v) => {
+  const c = Math.min(1, Math.max(0, v));
+  return 255 * (c <= 0.0031308 ? 12.92 * c : 1.055 * c ** (1 / 2.4) - 0.055);
+};

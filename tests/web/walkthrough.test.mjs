@@ -18,7 +18,8 @@ import os from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
-import { canvasBlocks, meanAbsDiff } from './canvas.mjs';
+import { canvasBlocks, canvasCodes, meanAbsDiff, toCode, toLinear } from './canvas.mjs';
+import { frameScenes, recordSocket } from './socket_log.mjs';
 
 const here = path.dirname(fileURLToPath(import.meta.url));
 const BASE = process.env.GEODESIC_URL;
@@ -75,48 +76,9 @@ after(async () => {
   if (userDataDir) fs.rmSync(userDataDir, { recursive: true, force: true });
 });
 
-// Keeps every JSON text message of the page's WebSockets (the JPEGs are binary and skipped).
-function recordSocket(p, log) {
-  p.on('websocket', (ws) => {
-    ws.on('framesent', (f) => push('sent', f.payload));
-    ws.on('framereceived', (f) => push('received', f.payload));
-  });
-  function push(dir, payload) {
-    if (typeof payload !== 'string') return;
-    try {
-      log.push({ dir, msg: JSON.parse(payload) });
-    } catch {
-      // not JSON: the test only reads JSON messages
-    }
-  }
-}
-
 const sentOfType = (type) => wsLog.filter((e) => e.dir === 'sent' && e.msg.type === type).map((e) => e.msg);
 const receivedOfType = (type) =>
   wsLog.filter((e) => e.dir === 'received' && e.msg.type === type).map((e) => e.msg);
-
-// The scene each received frame belongs to: frames follow their scene's `scene` message, but
-// one frame of the old scene, already on its way, may come right after it (the page drops it);
-// it continues the old accumulation rather than starting anew.
-function frameScenes() {
-  const byFrame = new Map();
-  let scene = null;
-  let next = null; // the scene named by a `scene` message, until its first frame
-  let last = null;
-  for (const { dir, msg } of wsLog) {
-    if (dir !== 'received') continue;
-    if (msg.type === 'scene') next = msg.name;
-    if (msg.type !== 'frame') continue;
-    const continues = last !== null && msg.spp > last.spp && msg.elapsed > last.elapsed;
-    if (next !== null && !(continues && scene !== null)) {
-      scene = next;
-      next = null;
-    }
-    byFrame.set(msg.frame, { scene, spp: msg.spp, moving: msg.moving, width: msg.width, height: msg.height });
-    last = msg;
-  }
-  return byFrame;
-}
 
 const shownFrame = (p) => p.evaluate(() => Number(document.getElementById('view').dataset.frame ?? -1));
 
@@ -130,7 +92,7 @@ async function waitForShownFrame(p, minSpp, accept = () => true, timeout = FRAME
   const logStart = wsLog.length;
   for (;;) {
     const n = await shownFrame(p);
-    const info = frameScenes().get(n);
+    const info = frameScenes(wsLog).get(n);
     if (info && !info.moving && info.spp >= minSpp && accept({ frame: n, ...info })) return { frame: n, ...info };
     const error = wsLog.slice(logStart).find((e) => e.dir === 'received' && e.msg.type === 'error');
     if (error) throw new Error(`the server answered an error while the test waited for a frame: ${JSON.stringify(error.msg)}`);
@@ -227,22 +189,6 @@ const setExposure = (p, stops) =>
     slider.dispatchEvent(new Event('input', { bubbles: true }));
   }, stops);
 const frameMessage = (n) => receivedOfType('frame').find((f) => f.frame === n);
-// The canvas's RGB codes.
-const canvasCodes = (p) =>
-  p.evaluate(() => {
-    const c = document.getElementById('view');
-    const { data } = c.getContext('2d').getImageData(0, 0, c.width, c.height);
-    return Array.from(data).filter((_, i) => i % 4 !== 3);
-  });
-const toLinear = (code) => {
-  const s = code / 255;
-  return s <= 0.04045 ? s / 12.92 : ((s + 0.055) / 1.055) ** 2.4;
-};
-const toCode = (v) => {
-  const c = Math.min(1, Math.max(0, v));
-  return 255 * (c <= 0.0031308 ? 12.92 * c : 1.055 * c ** (1 / 2.4) - 0.055);
-};
-
 test('the exposure slider brightens the view at once and auto follows the frames', async () => {
   const still = await waitForShownFrame(page, 16, (f) => frameMessage(f.frame)?.exposure === 0);
   const before = await canvasCodes(page);
