@@ -12,6 +12,7 @@
 #include "scene/moebius_text.h"
 #include "scene/preparation_budget.h"
 #include "scene/scene.h"
+#include "scene/text_chars.h"
 
 namespace geodesic {
 namespace {
@@ -121,8 +122,6 @@ std::vector<RawMatrix> read_gen(std::string_view text, const std::string& source
 // ("Matrix", "conj") stay separators. `rows_per_matrix` numbers the matrix in the error.
 void check_rows(std::string_view text, const std::string& source, bool units,
                 std::size_t rows_per_matrix) {
-  auto is_alpha = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; };
-  auto is_digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
   std::size_t open = std::string_view::npos, rows = 0;
   int line = 1, open_line = 1;
   for (std::size_t i = 0; i < text.size(); ++i) {
@@ -168,12 +167,10 @@ std::vector<RawMatrix> read_snappy(std::string_view text, const std::string& sou
     if (steps % 4096 == 0) check_preparation_budget();
     const char c = text[i];
     const bool starts_number =
-        std::isdigit(static_cast<unsigned char>(c)) ||
-        ((c == '-' || c == '+' || c == '.') && i + 1 < text.size() &&
-         (std::isdigit(static_cast<unsigned char>(text[i + 1])) || text[i + 1] == '.'));
+        is_digit(c) || ((c == '-' || c == '+' || c == '.') && i + 1 < text.size() &&
+                        (is_digit(text[i + 1]) || text[i + 1] == '.'));
     // Digits inside a name (e.g. "O31") are not entries.
-    const bool in_name = i > 0 && (std::isalpha(static_cast<unsigned char>(text[i - 1])) ||
-                                   text[i - 1] == '_');
+    const bool in_name = i > 0 && is_alpha(text[i - 1]);
     if (c == '\n') ++line_no;
     if (!starts_number || in_name) {
       ++i;

@@ -7,12 +7,10 @@
 
 #include "scene/preparation_budget.h"
 #include "scene/scene.h"
+#include "scene/text_chars.h"
 
 namespace geodesic {
 namespace {
-
-bool digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; }
-bool alpha(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0 || c == '_'; }
 
 // One scanned item: an entry (real or imaginary term), a bracket, or the word conj.
 struct Token {
@@ -43,9 +41,9 @@ class Scanner {
         space = false;
         continue;
       }
-      if (alpha(c)) {
+      if (is_alpha(c)) {
         std::size_t j = i_;
-        while (j < text_.size() && (alpha(text_[j]) || digit(text_[j]))) ++j;
+        while (j < text_.size() && (is_alpha(text_[j]) || is_digit(text_[j]))) ++j;
         const std::string_view word = text_.substr(i_, j - i_);
         if (word == "conj") out.push_back({Token::Conj, {}, false, false, space, false, line_, {}});
         else if (word == "I" || word == "i" || word == "j")
@@ -78,16 +76,17 @@ class Scanner {
       while (j < text_.size() && text_[j] == ' ') gap = true, ++j;
     }
     if (j >= text_.size()) return std::nullopt;
-    const bool number_start = digit(text_[j]) || (text_[j] == '.' && j + 1 < text_.size() && digit(text_[j + 1]));
+    const bool number_start =
+        is_digit(text_[j]) || (text_[j] == '.' && j + 1 < text_.size() && is_digit(text_[j + 1]));
     const bool unit_start = (text_[j] == 'I' || text_[j] == 'i' || text_[j] == 'j') &&
-                            (j + 1 >= text_.size() || !alpha(text_[j + 1]));
+                            (j + 1 >= text_.size() || !is_alpha(text_[j + 1]));
     if (!number_start && !(signed_term && unit_start)) return std::nullopt;
     double magnitude = 1;
     std::string bad;
     if (number_start) {
       std::size_t k = j;
       while (k < text_.size() &&
-             (digit(text_[k]) || text_[k] == '.' || text_[k] == 'e' || text_[k] == 'E' ||
+             (is_digit(text_[k]) || text_[k] == '.' || text_[k] == 'e' || text_[k] == 'E' ||
               ((text_[k] == '-' || text_[k] == '+') && (text_[k - 1] == 'e' || text_[k - 1] == 'E'))))
         ++k;
       const std::string number(text_.substr(j, k - j));
@@ -101,7 +100,7 @@ class Scanner {
     std::size_t k = j;
     if (k < text_.size() && text_[k] == '*') ++k;
     if (k < text_.size() && (text_[k] == 'I' || text_[k] == 'i' || text_[k] == 'j') &&
-        (k + 1 >= text_.size() || !alpha(text_[k + 1]))) {
+        (k + 1 >= text_.size() || !is_alpha(text_[k + 1]))) {
       imaginary = true;
       j = k + 1;
     }
