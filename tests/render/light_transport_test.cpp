@@ -146,6 +146,24 @@ void expect_point_light_images_sum(const std::string& geometry, const std::strin
   EXPECT_EQ(renderer.non_finite_samples(), 0u);
 }
 
+// Exponential coordinates of a point `way` of the way from the cell's centre to the face that
+// faces +z most, along a direction 17 degrees off the face's normal (S3: gnomonic chart
+// distance tan d). The image of a light there just past the opposite face is nearly as near
+// the patch at the centre as the light itself: the choice among images must give both their
+// share, whichever the order it walks them in. (Along the normal itself, the lens's axis or a screw
+// axis of the Poincare space, the long way round passes the centres of the cells, where the
+// patch's copies would hide the light.)
+Vec3 near_the_top_face(const std::string& manifold, double way) {
+  const Scene scene = scene_from_json(R"({"geometry": "spherical", "manifold": )" + manifold + R"(,
+    "camera": {"position": [0, 0, 0.05], "look_at": [0, 0, 0]}, "objects": []})");
+  const DomainFace* top = &scene.manifold.faces.at(0);
+  for (const DomainFace& face : scene.manifold.faces)
+    if (face.normal.z > top->normal.z) top = &face;
+  const Vec3 n = top->normal;
+  const Vec3 u = normalize(n + 0.3 * normalize(cross(n, Vec3{1, 0, 0})));
+  return u * std::atan(way * top->delta / dot(u, n));
+}
+
 // In S3 both ways round where the group lacks the antipodal map (L(11, 3)); where it holds it
 // (the Poincare space) the long way round meets the patch's own copy at the antipode, and
 // light sampling leaves it out, but every copy of the light is reached the short way: its 120
@@ -156,6 +174,11 @@ TEST(PointLight, ItsImagesInAQuotientSumToTheirClosedForm) {
                                 {0.1, 0.05, 0.15}, 2 * M_PI);
   expect_point_light_images_sum("spherical", R"({"type": "poincare-dodecahedral", "max_crossings": 48})",
                                 {0.1, 0.05, 0.15}, 2 * M_PI);
+  for (const char* manifold : {R"({"type": "lens", "p": 11, "q": 3, "max_crossings": 48})",
+                               R"({"type": "poincare-dodecahedral", "max_crossings": 48})"})
+    for (const double way : {0.3, 0.6, 0.9})
+      expect_point_light_images_sum("spherical", manifold, near_the_top_face(manifold, way),
+                                    2 * M_PI);
 }
 
 // The same scene lit by area lights, rendered with light sampling + BSDF sampling (MIS) and
