@@ -11,6 +11,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
+#include <exception>
 #include <fstream>
 #include <mutex>
 #include <optional>
@@ -62,7 +63,7 @@ double ms(Clock::duration d) { return std::chrono::duration<double, std::milli>(
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int main(int argc, char** argv) try {
   std::string scene = "cornell-box", device, save;
   int width = 640, height = 480;
   for (int i = 1; i < argc; ++i) {
@@ -153,4 +154,7 @@ int main(int argc, char** argv) {
   }
   service.close_session(id);
   return 0;
+} catch (const std::exception& e) {  // an unknown scene name, a device that will not start
+  std::fprintf(stderr, "geodesic_bench_walkthrough: %s\n", e.what());
+  return 1;
 }
