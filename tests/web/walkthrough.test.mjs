@@ -176,9 +176,13 @@ test('the server says what the scene is and bounds depth; the page uses both', a
 });
 
 test('the depth control sends settings', async () => {
+  const before = await waitForShownFrame(page, 24);
   await page.fill('#depth', '3');
   await page.press('#depth', 'Enter');
   await waitFor(() => sentOfType('settings').some((m) => m.max_depth === 3), 'settings {max_depth: 3}');
+  // The server starts the accumulation again at the new depth. The next test compares two frames
+  // of one accumulation: wait until the new one is on the canvas, not a frame from before.
+  await waitForShownFrame(page, 1, (f) => f.frame > before.frame && f.spp < before.spp);
 });
 
 // Sets the slider as a user's drag ends on `stops`.
