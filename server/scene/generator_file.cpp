@@ -116,9 +116,40 @@ std::vector<RawMatrix> read_gen(std::string_view text, const std::string& source
   return out;
 }
 
+// Why the characters of a row (the text inside an innermost [...]) do not make entries, or
+// "" when they do: a '.' with no digit beside it, a sign with no number after it, a '*' not
+// between a number and an imaginary unit (`units`), or parentheses that do not pair up.
+std::string row_structure_fault(std::string_view row, bool units) {
+  auto next = [&](std::size_t k) {  // the first character after k that is not a space
+    while (++k < row.size() && std::isspace(static_cast<unsigned char>(row[k]))) {}
+    return k < row.size() ? row[k] : '\0';
+  };
+  auto unit = [&](char c) { return units && (c == 'I' || c == 'i' || c == 'j'); };
+  int depth = 0;
+  for (std::size_t k = 0; k < row.size(); ++k) {
+    const char c = row[k];
+    const char before = k > 0 ? row[k - 1] : '\0';
+    if (c == '(') ++depth;
+    if (c == ')' && --depth < 0) return "a \")\" closes no \"(\"";
+    if (c == '.' && !is_digit(before) && !(k + 1 < row.size() && is_digit(row[k + 1])))
+      return "a \".\" has no digit beside it";
+    const bool exponent_sign = (before == 'e' || before == 'E') && k > 1 &&
+                               (is_digit(row[k - 2]) || row[k - 2] == '.');
+    if ((c == '+' || c == '-') && !exponent_sign) {
+      const char n = next(k);
+      if (!(is_digit(n) || n == '.' || n == '(' || unit(n)))
+        return std::string("a \"") + c + "\" has no number after it";
+    }
+    if (c == '*' && !(is_digit(before) || before == '.')) return "a \"*\" follows no number";
+    if (c == '*' && !unit(next(k))) return "a \"*\" is not followed by an imaginary unit";
+  }
+  return depth > 0 ? "a \"(\" is not closed" : "";
+}
+
 // Refuses anything inside a row (an innermost [...]) that is not part of an entry: a word
-// other than an exponent or an imaginary unit (`units`: Moebius text only), or a character
-// other than digits, signs, '.', '*', separators (whitespace , ; ( )). Words outside rows
+// other than an exponent or an imaginary unit (`units`: Moebius text only), a character
+// other than digits, signs, '.', '*', separators (whitespace , ; ( )), or those characters
+// out of place (row_structure_fault). Words outside rows
 // ("Matrix", "conj") stay separators. `rows_per_matrix` numbers the matrix in the error.
 void check_rows(std::string_view text, const std::string& source, bool units,
                 std::size_t rows_per_matrix) {
@@ -153,6 +184,10 @@ void check_rows(std::string_view text, const std::string& source, bool units,
                  "] is not part of a number");
       k = end - 1;
     }
+    if (const std::string fault = row_structure_fault(row, units); !fault.empty())
+      fail(source, rows / rows_per_matrix, open_line,
+           fault + " inside [" + std::string(row.substr(0, 60)) + (row.size() > 60 ? "..." : "") +
+               "]");
     open = std::string_view::npos;
     ++rows;
   }

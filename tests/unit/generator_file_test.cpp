@@ -123,10 +123,28 @@ TEST(GeneratorFile, RefusesJunkInsideARowByName) {
   // An imaginary unit is no part of an O(3,1) entry.
   EXPECT_NE(error_of("[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 2*I, 1]]").find("\"I\""),
             std::string::npos);
+  // Entry characters out of place: what a fuzzer once got past the reader as two Moebius
+  // matrices, whose domain search then ran for seconds before refusing them.
+  EXPECT_EQ(error_of("# m004%2e%2e\n[.  1+0j), 2j], [-1j, (1-2j  1+0j), 2j], [-1j, (1-)]]"),
+            "test.gen: matrix 1 (line 2): a \".\" has no digit beside it inside [.  1+0j), 2j]");
+  EXPECT_NE(error_of("[[1, 1], [0, 1+0j)]]").find("matrix 1 (line 1): a \")\" closes no \"(\" "
+                                                  "inside [0, 1+0j)]"),
+            std::string::npos);
+  EXPECT_NE(error_of("[[1, 1], [0, (1-)]]").find("a \"-\" has no number after it inside [0, (1-)]"),
+            std::string::npos);
+  EXPECT_NE(error_of("[[1, 1], [0, (1+2j]]").find("a \"(\" is not closed inside [0, (1+2j]"),
+            std::string::npos);
+  EXPECT_NE(error_of("[[1, 1], [0, *I]]").find("a \"*\" follows no number"), std::string::npos);
+  EXPECT_NE(error_of("[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 2*, 1]]")
+                .find("matrix 1 (line 1): a \"*\" is not followed by an imaginary unit"),
+            std::string::npos);
   // Exponents, units, Python's complex literals and words outside rows still read.
   const GeneratorSet set = parse_generators(
       "G = [Matrix([[1, 1.5e-1j], [0, 1]]), conj Matrix([[(1+0j), 0], [0, 1E+0]])]", "m.txt");
   EXPECT_EQ(set.generators.size(), 2u);
+  EXPECT_EQ(parse_generators("[[1., -.5*I], [0, 1]]\n[[1, 2.5E-1 - 1*i], [0, 1]]", "s.txt")
+                .generators.size(),
+            2u);
 }
 
 TEST(GeneratorFile, FormatRoundTrips) {
