@@ -8,6 +8,7 @@
 #include "scene/cusp_neighbourhoods.h"
 #include "scene/generator_file.h"
 #include "scene/manifold.h"
+#include "scene/spherical_view.h"
 
 namespace geodesic {
 namespace {
@@ -33,6 +34,54 @@ int crossings_for(GeometryKind kind, double inradius) {
                     kMaxCrossings);
 }
 
+// S3: the light's intensity makes the irradiance that all its images bring to the centre of
+// the sphere they light most this much. Every image shines on every point there, so the rule
+// for a lone light (intensity going with the in-radius squared) left the scenes of large
+// groups washed out and of small ones dark: at 12-17 (the prism spaces, L(8,3)) renders came
+// out at 78-93 of 255 in mean sRGB code, at 40-215 (the binary tetrahedral, octahedral and
+// icosahedral groups) at 122-174 with desaturated spheres, at 2.3 (projective space) at 32.
+constexpr double kSphereIrradiance = 13;
+
+// S3: the camera moves off the domain's centre when the centre's antipode comes closer than
+// this (times the in-radius) to an edge's tube or a sphere: every geodesic from the camera passes
+// through its antipode, so what lies there fills the whole background (an edge of L(5,2) does).
+constexpr double kAntipodeClearance = 0.1;
+
+// Where to put the camera, and how bright to make the light, in a spherical space (see above).
+struct SphericalView {
+  Vec3 eye;
+  double intensity = 1;  // the light's
+};
+
+SphericalView spherical_view(const DirichletDomain& domain, const std::vector<Vec3>& spheres,
+                             double sphere_radius, double edge_radius, const Vec3& light) {
+  constexpr GeometryKind k = GeometryKind::Spherical;
+  const std::vector<Mat4> group = spherical_group(domain.manifold);
+  SphericalView view;
+  double irradiance = 0;
+  std::vector<BallObstacle> balls;
+  for (const Vec3& c : spheres) {
+    const Vec4 centre = model::exp_origin(k, c);
+    irradiance = std::max(irradiance, orbit_irradiance(group, model::exp_origin(k, light), centre));
+    balls.push_back({centre, sphere_radius});
+  }
+  view.intensity = kSphereIrradiance / irradiance;
+  // The centre, else the clearest of points a quarter in-radius from it.
+  const double r = domain.inradius;
+  auto clearance = [&](const Vec3& eye) {
+    return antipode_clearance(group, domain.manifold.domain, edge_radius, balls,
+                              model::exp_origin(k, eye));
+  };
+  double best = clearance(view.eye);
+  if (best >= kAntipodeClearance * r) return view;
+  for (const Vec3& d : {Vec3{0, 0, -1}, Vec3{1, 0, 0}, Vec3{-1, 0, 0}, Vec3{0, 1, 0},
+                        Vec3{0, -1, 0}, Vec3{0, 0, 1}, normalize(Vec3{1, 1, -1}),
+                        normalize(Vec3{-1, 1, -1}), normalize(Vec3{1, -1, -1}),
+                        normalize(Vec3{-1, -1, -1})})
+    if (const double c = clearance(d * (0.25 * r)); c > best) best = c, view.eye = d * (0.25 * r);
+  return view;
+}
+
 }  // namespace
 
 Json default_scene_document(const std::string& title, GeometryKind kind, Json manifold,
@@ -45,9 +94,20 @@ Json default_scene_document(const std::string& title, GeometryKind kind, Json ma
     manifold["max_crossings"] = crossings_for(kind, r);
   // Sphere centres at 0.55 r and radii 0.18 r keep every sphere inside the in-ball; the light's
   // intensity goes with r^2, as its distance to the spheres does (small domains are nearly flat).
+  // In S3 the light's intensity is set by all its images, and the camera may move off the base
+  // point (spherical_view).
   const Vec3 red = normalize(Vec3{0.5, 0.1, -0.85}) * (0.55 * r);
   const Vec3 green = normalize(Vec3{-0.6, 0.35, -0.7}) * (0.55 * r);
   const Vec3 blue = normalize(Vec3{0.1, -0.65, 0.75}) * (0.55 * r);
+  const Vec3 light = Vec3{0.1, 0.6, 0.2} * r;
+  double intensity = std::min(1.0, 2 * r * r);
+  Vec3 eye{0, 0, 0};
+  if (kind == GeometryKind::Spherical) {
+    const SphericalView view =
+        spherical_view(domain, {red, green, blue}, 0.18 * r, pieces ? 0 : 0.02 * r, light);
+    eye = view.eye;
+    intensity = view.intensity;
+  }
   Json objects = Json::array();
   for (const auto& [name, centre] : {std::pair{"red", red}, {"green", green}, {"blue", blue}})
     objects.push_back({{"type", "sphere"}, {"material", name}, {"center", vec(centre)},
@@ -75,12 +135,12 @@ Json default_scene_document(const std::string& title, GeometryKind kind, Json ma
       {"name", title},
       {"geometry", geometry_name(kind)},
       {"manifold", manifold},
-      {"camera", {{"position", vec({0, 0, 0})}, {"look_at", vec({0, 0, -0.5 * r})}, {"fov_y", 80}}},
+      {"camera", {{"position", vec(eye)}, {"look_at", vec(eye + Vec3{0, 0, -0.5 * r})}, {"fov_y", 80}}},
       {"materials", materials},
       {"objects", objects},
       {"lights", Json::array({{{"type", "point"},
-                               {"position", vec(Vec3{0.1, 0.6, 0.2} * r)},
-                               {"intensity", std::min(1.0, 2 * r * r)}}})},
+                               {"position", vec(light)},
+                               {"intensity", intensity}}})},
       {"render",
        {{"width", 512}, {"height", 512}, {"max_depth", 1}, {"spp", 16}, {"seed", 1u},
         {"ambient", 0.25}}}};
