@@ -116,6 +116,35 @@ std::vector<RawMatrix> read_gen(std::string_view text, const std::string& source
   return out;
 }
 
+// Each number in the text with its line: digits, a sign or '.' before digits, an exponent;
+// digits inside a name (e.g. "O31") are not numbers.
+std::vector<std::pair<std::string_view, int>> number_tokens(std::string_view text) {
+  std::vector<std::pair<std::string_view, int>> out;
+  int line_no = 1;
+  for (std::size_t i = 0, steps = 1; i < text.size(); ++steps) {
+    if (steps % 4096 == 0) check_preparation_budget();
+    const char c = text[i];
+    const bool starts_number =
+        is_digit(c) || ((c == '-' || c == '+' || c == '.') && i + 1 < text.size() &&
+                        (is_digit(text[i + 1]) || text[i + 1] == '.'));
+    const bool in_name = i > 0 && is_alpha(text[i - 1]);
+    if (c == '\n') ++line_no;
+    if (!starts_number || in_name) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i + 1;
+    while (j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) ||
+                               text[j] == '.' ||
+                               ((text[j] == '-' || text[j] == '+') &&
+                                (text[j - 1] == 'e' || text[j - 1] == 'E'))))
+      ++j;
+    out.emplace_back(text.substr(i, j - i), line_no);
+    i = j;
+  }
+  return out;
+}
+
 // Why the characters of a row (the text inside an innermost [...]) do not make entries, or
 // "" when they do: a '.' with no digit beside it, a sign with no number after it, a '*' not
 // between a number and an imaginary unit (`units`), or parentheses that do not pair up.
@@ -149,10 +178,11 @@ std::string row_structure_fault(std::string_view row, bool units) {
 // Refuses anything inside a row (an innermost [...]) that is not part of an entry: a word
 // other than an exponent or an imaginary unit (`units`: Moebius text only), a character
 // other than digits, signs, '.', '*', separators (whitespace , ; ( )), or those characters
-// out of place (row_structure_fault). Words outside rows
-// ("Matrix", "conj") stay separators. `rows_per_matrix` numbers the matrix in the error.
+// out of place (row_structure_fault), or a row of other than `size` entries (a size x size
+// matrix: 2 for Moebius text, 4 for O(3,1) rows). Words outside rows
+// ("Matrix", "conj") stay separators.
 void check_rows(std::string_view text, const std::string& source, bool units,
-                std::size_t rows_per_matrix) {
+                std::size_t size) {
   std::size_t open = std::string_view::npos, rows = 0;
   int line = 1, open_line = 1;
   for (std::size_t i = 0; i < text.size(); ++i) {
@@ -178,16 +208,22 @@ void check_rows(std::string_view text, const std::string& source, bool units,
                                        : is_digit(r) || std::isspace(static_cast<unsigned char>(r)) ||
                                              std::string_view("+-.*,;()").find(r) != std::string_view::npos;
       if (!allowed)
-        fail(source, rows / rows_per_matrix, at,
+        fail(source, rows / size, at,
              "\"" + std::string(word.substr(0, 40)) + "\" inside [" +
                  std::string(row.substr(0, 60)) + (row.size() > 60 ? "..." : "") +
                  "] is not part of a number");
       k = end - 1;
     }
+    const std::string shown =
+        "[" + std::string(row.substr(0, 60)) + (row.size() > 60 ? "..." : "") + "]";
     if (const std::string fault = row_structure_fault(row, units); !fault.empty())
-      fail(source, rows / rows_per_matrix, open_line,
-           fault + " inside [" + std::string(row.substr(0, 60)) + (row.size() > 60 ? "..." : "") +
-               "]");
+      fail(source, rows / size, open_line, fault + " inside " + shown);
+    const std::size_t entries = units ? moebius_row_entries(row) : number_tokens(row).size();
+    if (entries != size)
+      fail(source, rows / size, open_line,
+           "row " + std::to_string(rows % size + 1) + ", " + shown + ", has " +
+               std::to_string(entries) + (entries == 1 ? " entry" : " entries") + ", not " +
+               std::to_string(size));
     open = std::string_view::npos;
     ++rows;
   }
@@ -197,30 +233,9 @@ void check_rows(std::string_view text, const std::string& source, bool units,
 std::vector<RawMatrix> read_snappy(std::string_view text, const std::string& source) {
   std::vector<double> values;
   std::vector<int> lines;
-  int line_no = 1;
-  for (std::size_t i = 0, steps = 1; i < text.size(); ++steps) {
-    if (steps % 4096 == 0) check_preparation_budget();
-    const char c = text[i];
-    const bool starts_number =
-        is_digit(c) || ((c == '-' || c == '+' || c == '.') && i + 1 < text.size() &&
-                        (is_digit(text[i + 1]) || text[i + 1] == '.'));
-    // Digits inside a name (e.g. "O31") are not entries.
-    const bool in_name = i > 0 && is_alpha(text[i - 1]);
-    if (c == '\n') ++line_no;
-    if (!starts_number || in_name) {
-      ++i;
-      continue;
-    }
-    std::size_t j = i + 1;
-    while (j < text.size() && (std::isalnum(static_cast<unsigned char>(text[j])) ||
-                               text[j] == '.' ||
-                               ((text[j] == '-' || text[j] == '+') &&
-                                (text[j - 1] == 'e' || text[j - 1] == 'E'))))
-      ++j;
-    values.push_back(number(std::string(text.substr(i, j - i)), source, values.size() / 16,
-                            line_no));
-    lines.push_back(line_no);
-    i = j;
+  for (const auto& [token, line] : number_tokens(text)) {
+    values.push_back(number(std::string(token), source, values.size() / 16, line));
+    lines.push_back(line);
   }
   if (values.size() % 16 != 0)
     fail(source, values.size() / 16, lines.back(),

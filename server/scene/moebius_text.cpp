@@ -164,6 +164,8 @@ bool looks_like_moebius(std::string_view text) {
   return false;
 }
 
+std::size_t moebius_row_entries(std::string_view row) { return entries(Scanner(row).tokens()).size(); }
+
 std::vector<MoebiusText> read_moebius(std::string_view text, const std::string& source) {
   const std::vector<Entry> all = entries(Scanner(text).tokens());
   for (std::size_t k = 0; k < all.size(); ++k)

@@ -31,6 +31,9 @@ struct MoebiusText {
 // Moebius text rather than SnapPy's O(3,1) rows of four.
 bool looks_like_moebius(std::string_view text);
 
+// The entries in one row's text (what lies inside its brackets).
+std::size_t moebius_row_entries(std::string_view row);
+
 // Throws SceneError "<source>: matrix <i> (line <l>): <reason>" for an entry that is not a
 // number, a count that is not a multiple of 4, or a determinant of zero.
 std::vector<MoebiusText> read_moebius(std::string_view text, const std::string& source);

@@ -102,7 +102,11 @@ TEST(MoebiusText, ErrorsNameMatrixLineAndReason) {
   EXPECT_EQ(message("[[1, 1], [0, 1]]\n[[1, 2], [2, 4]]"),
             "g.txt: matrix 2 (line 2): determinant ad - bc is 0: not a Moebius transformation");
   EXPECT_EQ(message("[[1, 1], [0, 1]]\n[[1, 2], [3]]"),
-            "g.txt: matrix 2 (line 2): has 3 entries, not 4 (Moebius matrices are 2x2 complex)");
+            "g.txt: matrix 2 (line 2): row 2, [3], has 1 entry, not 2");
+  EXPECT_EQ(message("[[1, 1], [0, 1 2]]"), "g.txt: matrix 1 (line 1): row 2, [0, 1 2], has 3 entries, not 2");
+  // Rows without brackets are counted as a whole.
+  EXPECT_EQ(message("[[1, 1], [0, 1]]\n[[1, 2] [3 (4 + 1j) 5]]"),
+            "g.txt: matrix 2 (line 2): row 2, [3 (4 + 1j) 5], has 3 entries, not 2");
   EXPECT_NE(message("[[1, 1], [0, 1e999]]").find("is not a finite number"), std::string::npos);
 }
 

@@ -103,8 +103,10 @@ TEST(GeneratorFile, ReadsSnapPyPairingMatrices) {
       for (int c = 0; c < 4; ++c)
         EXPECT_NEAR(set.generators[k].m[r][c], sw.generators[k].m[r][c], 1e-15);
   EXPECT_NEAR(dirichlet_domain(set.kind, set.generators).volume, sw.volume, 1e-8);
-  EXPECT_NE(error_of("[[1, 0, 0, 0], [0, 1, 0]]").find("has 7 entries, not 16"),
-            std::string::npos);
+  EXPECT_EQ(error_of("[[1, 0, 0, 0], [0, 1, 0]]"),
+            "test.gen: matrix 1 (line 1): row 2, [0, 1, 0], has 3 entries, not 4");
+  EXPECT_EQ(error_of("[[1, 0, 0, 0], [0, 1, 0, 0],\n [0, 0, 1, 0], [0, 0, 0, 1]],\n[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0, 0]]"),
+            "test.gen: matrix 2 (line 3): row 3, [0, 0, 1, 0, 0], has 5 entries, not 4");
 }
 
 // Junk inside a row (a request's bytes pasted into an entry, a word, a stray character) is
