@@ -50,9 +50,23 @@ double antipode_clearance(const std::vector<Mat4>& group, const Polyhedron& doma
       const double t = double(i) / kSteps;
       edge_points.push_back(model::lift(kS3, domain.vertices[a] * (1 - t) + domain.vertices[b] * t));
     }
-  double clearance = INFINITY;
+  // How far the surfaces reach from the origin: an image of the antipode farther out than
+  // that plus the clearance found so far cannot come closer. Nearest images first.
+  double reach = 0;
+  for (const Vec4& e : edge_points)
+    reach = std::max(reach, model::geodesic_distance(kS3, e, model::origin()) + edge_radius);
+  for (const BallObstacle& b : balls)
+    reach = std::max(reach, model::geodesic_distance(kS3, b.centre, model::origin()) + b.radius);
+  std::vector<std::pair<double, Vec4>> images;
   for (const Mat4& g : group) {
     const Vec4 q = g * -eye;
+    images.emplace_back(model::geodesic_distance(kS3, q, model::origin()), q);
+  }
+  std::sort(images.begin(), images.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  double clearance = INFINITY;
+  for (const auto& [from_origin, q] : images) {
+    if (from_origin - reach >= clearance) break;
     for (const Vec4& e : edge_points)
       clearance = std::min(clearance, model::geodesic_distance(kS3, q, e) - edge_radius);
     for (const BallObstacle& b : balls)
