@@ -37,8 +37,8 @@ int crossings_for(GeometryKind kind, double inradius) {
 // S3: the light's intensity makes the irradiance that all its images bring to the centre of
 // the sphere they light most this much. Every image shines on every point there, so the rule
 // for a lone light (intensity going with the in-radius squared) left the scenes of large
-// groups washed out and of small ones dark: at 12-17 (the prism spaces, L(8,3)) renders came
-// out at 78-93 of 255 in mean sRGB code, at 40-215 (the binary tetrahedral, octahedral and
+// groups washed out and of small ones dark: at 11-13 (the prism spaces) renders came out at
+// 78-93 of 255 in mean sRGB code, at 23-43 (the binary tetrahedral, octahedral and
 // icosahedral groups) at 122-174 with desaturated spheres, at 2.3 (projective space) at 32.
 constexpr double kSphereIrradiance = 13;
 

@@ -3,7 +3,7 @@
 // the Dirichlet domain's base point, three coloured spheres and a light around it, and the
 // domain's edges, all sized by the domain's in-radius so that they fit any space. In S3 the
 // camera moves off the base point when the base point's antipode lies on an edge or a sphere,
-// and a light with many bright images is dimmed (scene/spherical_view.h).
+// and the light's intensity is set by what all its images bring (scene/spherical_view.h).
 #pragma once
 
 #include <string>

@@ -192,6 +192,8 @@ void check_rows(std::string_view text, const std::string& source, bool units,
     if (c == '[') open = i, open_line = line;
     if (c != ']' || open == std::string_view::npos) continue;
     const std::string_view row = text.substr(open + 1, i - open - 1);
+    const std::string shown =
+        "[" + std::string(row.substr(0, 60)) + (row.size() > 60 ? "..." : "") + "]";
     int at = open_line;
     for (std::size_t k = 0; k < row.size(); ++k) {
       const char r = row[k];
@@ -209,13 +211,10 @@ void check_rows(std::string_view text, const std::string& source, bool units,
                                              std::string_view("+-.*,;()").find(r) != std::string_view::npos;
       if (!allowed)
         fail(source, rows / size, at,
-             "\"" + std::string(word.substr(0, 40)) + "\" inside [" +
-                 std::string(row.substr(0, 60)) + (row.size() > 60 ? "..." : "") +
-                 "] is not part of a number");
+             "\"" + std::string(word.substr(0, 40)) + "\" inside " + shown +
+                 " is not part of a number");
       k = end - 1;
     }
-    const std::string shown =
-        "[" + std::string(row.substr(0, 60)) + (row.size() > 60 ? "..." : "") + "]";
     if (const std::string fault = row_structure_fault(row, units); !fault.empty())
       fail(source, rows / size, open_line, fault + " inside " + shown);
     const std::size_t entries = units ? moebius_row_entries(row) : number_tokens(row).size();
