@@ -258,6 +258,13 @@ double relative_isometry_error(GeometryKind k, const Mat4& g) {
   return isometry_error(k, g) / (size * size);
 }
 
+bool is_antipodal_map(const Mat4& g) {
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c)
+      if (std::abs(g.m[r][c] + (r == c ? 1.0 : 0.0)) > 1e-9) return false;
+  return true;
+}
+
 Vec3 chart(GeometryKind /*k*/, const Vec4& p) { return p.xyz() / p.w; }
 
 Vec4 lift(GeometryKind k, const Vec3& x) {

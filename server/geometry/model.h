@@ -106,6 +106,8 @@ double isometry_error(GeometryKind k, const Mat4& g);
 // of an isometry written in double is ~1e-16 of it however far it carries the origin, while
 // isometry_error grows as e^(2D) in H3 (a pose 20 out: ~10).
 double relative_isometry_error(GeometryKind k, const Mat4& g);
+// S3: whether g is the antipodal map -1 (to 1e-9 in every entry).
+bool is_antipodal_map(const Mat4& g);
 
 // Chart (p.xyz / p.w) and its inverse onto the model's w > 0 part.
 Vec3 chart(GeometryKind k, const Vec4& p);

@@ -34,7 +34,7 @@ double orbit_irradiance(const std::vector<Mat4>& group, const Vec4& light, const
   for (const Mat4& g : group) {
     const double s = std::sin(model::geodesic_distance(kS3, p, g * light));
     total += 1 / std::max(s * s, 1e-12);
-    antipodal |= model::geodesic_distance(kS3, g * model::origin(), -model::origin()) < 1e-9;
+    antipodal |= model::is_antipodal_map(g);
   }
   return antipodal ? total : 2 * total;
 }

@@ -115,7 +115,7 @@ TEST(CatalogueScenes, RenderFiniteAndEveryRayEndsInTheCell) {
 // of whose images together bring its spheres a set irradiance leaves them their colour: at
 // the lone light's intensity the binary icosahedral, octahedral and L(11,3) scenes were washed
 // out, their lit pixels, clipped to 1, greyer (smallest channel over largest 0.57-0.69 on
-// average) than any now (0.22-0.52; 0.27-0.52 before in the others). And no edge tube lies at
+// average) than any now (0.22-0.39; 0.27-0.52 before in the others). And no edge tube lies at
 // the camera's antipode, where it would fill the whole background: in L(5,2) one did, every
 // pixel lit and 55 % of them the tubes' yellow (now at most 23 % in any of these scenes).
 TEST(CatalogueScenes, SphericalDefaultsKeepTheirColourAndAClearBackground) {

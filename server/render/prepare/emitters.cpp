@@ -39,13 +39,6 @@ double resolve_cutoff(const Scene& scene, double circumradius) {
   return k == GeometryKind::Hyperbolic ? std::min(circumradius, 1.0) : circumradius;
 }
 
-bool is_antipodal_map(const Mat4& g) {
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c)
-      if (std::abs(g.m[r][c] + (r == c ? 1.0 : 0.0)) > 1e-9) return false;
-  return true;
-}
-
 // An image of an emitter: its distance from the cell's centre, the group element, and the
 // emitter's centre (a horosphere's l) carried by it.
 struct Image {
@@ -270,7 +263,7 @@ EmitterTable build_emitters(const Scene& scene) {
   // crosses the copy of its own surface at the antipode. The long way round then brings no
   // light, and light sampling leaves it out (sampling it only costs variance).
   const bool antipodal =
-      k == GeometryKind::Spherical && std::any_of(group.begin(), group.end(), is_antipodal_map);
+      k == GeometryKind::Spherical && std::any_of(group.begin(), group.end(), model::is_antipodal_map);
   if (antipodal && table.cutoff > kPi) table.cutoff = kPi;
   for (const PointLight& light : scene.lights) {
     Emitting e;
