@@ -10,20 +10,18 @@ namespace {
 using Clock = RenderSession::Clock;
 
 // After a move, frames are rendered at reduced resolution until the camera has been still this
-// long (fast feedback while walking, full quality when still), as Cycles' viewport does.
+// long (fast feedback while walking, full quality when still), as Cycles' viewport does: the
+// divisor is chosen from the measured cost so that one sample of the frame takes about
+// kMovingFrameSeconds.
 constexpr double kSettleSeconds = 0.25;
+constexpr double kMovingFrameSeconds = 0.03;
+constexpr int kMaxMovingDivisor = 8;
 
 double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
 }  // namespace
-
-double moving_frame_divisor(double full_sample_seconds) {
-  const double fit = std::sqrt(full_sample_seconds / kMovingFrameSeconds);
-  const double step = fit > 0 ? std::round(std::log2(fit) * kMovingDivisorSteps) : 0;
-  return std::clamp(std::exp2(step / kMovingDivisorSteps), kMinMovingDivisor, kMaxMovingDivisor);
-}
 
 void RenderSession::adopt(PreparedScene prepared) {
   renderer = std::move(prepared.renderer);
@@ -48,10 +46,14 @@ void RenderSession::rebase(std::unique_ptr<Renderer> rebuilt) {
 
 void RenderSession::restart(bool now_moving) {
   moving = now_moving;
-  const double divisor =
-      moving ? moving_frame_divisor(slicer.seconds_per_pixel_sample() * width * height) : 1;
-  const int w = std::max(16, int(width / divisor));
-  const int h = std::max(16, int(height / divisor));
+  int divisor = 1;
+  if (moving) {
+    const double full_sample = slicer.seconds_per_pixel_sample() * width * height;
+    divisor = std::clamp(int(std::ceil(std::sqrt(full_sample / kMovingFrameSeconds))), 2,
+                         kMaxMovingDivisor);
+  }
+  const int w = std::max(16, width / divisor);
+  const int h = std::max(16, height / divisor);
   // Moving frames also trace at most one bounce: direct light shows the shapes, and the
   // indirect light comes back once the camera is still.
   renderer->set_max_depth(moving ? std::min(1, scene.render.max_depth) : scene.render.max_depth);

@@ -15,18 +15,6 @@
 
 namespace geodesic {
 
-// While the camera moves, a frame is the full view's resolution divided by a factor chosen from
-// the measured cost of a sample of the full view (full_sample_seconds), so that one sample of
-// the moving frame takes about kMovingFrameSeconds; between kMinMovingDivisor (a cheap scene's
-// frame keeps half the width) and kMaxMovingDivisor. The factor is the nearest of
-// kMovingDivisorSteps steps per doubling (9 % apart), not the next whole number, which left a
-// costly scene's frames up to a sixth narrower than their time allows; the steps keep a walk's
-// frames one size while the measured cost wavers by a few per cent.
-inline constexpr double kMovingFrameSeconds = 0.03;
-inline constexpr double kMinMovingDivisor = 2, kMaxMovingDivisor = 8;
-inline constexpr double kMovingDivisorSteps = 8;
-double moving_frame_divisor(double full_sample_seconds);
-
 struct RenderSession {
   using Clock = std::chrono::steady_clock;
 
