@@ -102,16 +102,21 @@ int main(int argc, char** argv) try {
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   const auto walk_end = Clock::now();
-  size_t walk_frames = 0;
-  int moving_width = 0;
+  // The walk's frame widths: the median, the range, and how often it changed (the session sizes
+  // a moving frame from the measured cost, which wavers).
+  std::vector<int> widths;
+  size_t resizes = 0;
   {
     std::lock_guard lock(frames.mutex);
     for (const auto& [t, f] : frames.log)
       if (t > walk_start && t <= walk_end) {
-        ++walk_frames;
-        moving_width = f.width;
+        if (!widths.empty() && f.width != widths.back()) ++resizes;
+        widths.push_back(f.width);
       }
   }
+  const size_t walk_frames = widths.size();
+  std::sort(widths.begin(), widths.end());
+  if (widths.empty()) widths.push_back(0);
 
   // Time to a clean image once still.
   const auto still = Clock::now();
@@ -124,9 +129,9 @@ int main(int argc, char** argv) try {
   if (!latencies.empty())
     std::printf("move -> first frame:      median %.0f ms, worst %.0f ms (%zu moves)\n",
                 latencies[latencies.size() / 2], latencies.back(), latencies.size());
-  std::printf("frames/s while moving:    %.1f (at %d px wide)\n",
+  std::printf("frames/s while moving:    %.1f (median %d px wide; %d-%d px, %zu size changes)\n",
               walk_frames / std::chrono::duration<double>(walk_end - walk_start).count(),
-              moving_width);
+              widths[widths.size() / 2], widths.front(), widths.back(), resizes);
   // Unreached within the wait: where the still image stood when it ended.
   std::optional<std::pair<Clock::time_point, FrameInfo>> last;
   {
