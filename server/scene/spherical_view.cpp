@@ -48,7 +48,8 @@ double antipode_clearance(const std::vector<Mat4>& group, const Polyhedron& doma
   for (const auto& [a, b] : domain.edges)
     for (int i = 0; i <= kSteps; ++i) {
       const double t = double(i) / kSteps;
-      edge_points.push_back(model::lift(kS3, domain.vertices[a] * (1 - t) + domain.vertices[b] * t));
+      edge_points.push_back(
+          model::lift(kS3, domain.vertices[a] * (1 - t) + domain.vertices[b] * t));
     }
   // How far the surfaces reach from the origin: an image of the antipode farther out than
   // that plus the clearance found so far cannot come closer. Nearest images first.

@@ -1,8 +1,9 @@
 // Two facts of S3 that the default scene of a spherical space (default_scene.h) has to allow
 // for. Its group is finite, and every image of a point light shines on every point, along both
 // ways round: in the catalogue's scenes the light's images together bring 2-17 times what
-// the nearest brings to a sphere's centre, more the larger the group. And every geodesic from the camera passes through the camera's antipode: an
-// object there fills the whole background (in L(5,2), an edge of the domain does).
+// the nearest brings to a sphere's centre, more the larger the group. And every geodesic from
+// the camera passes through the camera's antipode: an object there fills the whole background
+// (in L(5,2), an edge of the domain does).
 #pragma once
 
 #include <vector>

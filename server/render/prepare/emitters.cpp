@@ -262,8 +262,8 @@ EmitterTable build_emitters(const Scene& scene) {
   // x and -x are copies of one point: every geodesic from a surface point that runs past pi
   // crosses the copy of its own surface at the antipode. The long way round then brings no
   // light, and light sampling leaves it out (sampling it only costs variance).
-  const bool antipodal =
-      k == GeometryKind::Spherical && std::any_of(group.begin(), group.end(), model::is_antipodal_map);
+  const bool antipodal = k == GeometryKind::Spherical &&
+                         std::any_of(group.begin(), group.end(), model::is_antipodal_map);
   if (antipodal && table.cutoff > kPi) table.cutoff = kPi;
   for (const PointLight& light : scene.lights) {
     Emitting e;
