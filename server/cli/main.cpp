@@ -19,6 +19,7 @@ const char* kUsage =
     "commands:\n"
     "  render SCENE.json -o OUT.{png,exr,jpg} [--spp N | --time SECONDS | --target-error E]\n"
     "         [--report FILE.json] [--width W] [--height H] [--max-depth D] [--seed S]\n"
+    "         [--light-samples N]\n"
     "         [--device NAME|INDEX] [--lighting physical|paper] [--exposure STOPS|auto]\n"
     "         [--backend auto|ray-query|pipeline] [--dump-shaders DIR]\n"
     "         [--pipeline specialised|all-features] [--pipeline-cache DIR]\n"

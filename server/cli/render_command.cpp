@@ -36,7 +36,7 @@ struct RenderArgs {
   std::string scene, generators, output, device, backend = "auto", lighting;
   std::string scene_dir;        // --scene-dir: where the scene's files resolve (confined to it)
   std::optional<Mat4> camera;   // --camera: 16 numbers, the pose as frame messages give it
-  std::optional<int> spp, width, height, max_depth;
+  std::optional<int> spp, width, height, max_depth, light_samples;
   std::optional<uint64_t> seed;
   std::optional<Exposure> exposure;  // the scene's render.exposure when not given
   // A part of a sample-parallel render: sample indices from --samples-from, the accumulation
@@ -120,6 +120,8 @@ RenderArgs parse(int argc, char** argv) {
     else if (flag == "--width") a.width = parse_int(flag, value(), 1, 8192);
     else if (flag == "--height") a.height = parse_int(flag, value(), 1, 8192);
     else if (flag == "--max-depth") a.max_depth = parse_int(flag, value(), 0, 64);
+    else if (flag == "--light-samples")
+      a.light_samples = parse_int(flag, value(), 1, kMaxLightSamples);
     else if (flag == "--seed") a.seed = parse_int(flag, value(), 0, 1L << 62);
     else if (flag == "--device") a.device = value();
     else if (flag == "--generators") a.generators = value();
@@ -188,6 +190,7 @@ int render_command(int argc, char** argv) {
   if (args.width) scene.render.width = *args.width;
   if (args.height) scene.render.height = *args.height;
   if (args.max_depth) scene.render.max_depth = *args.max_depth;
+  if (args.light_samples) scene.render.light_samples = *args.light_samples;
   if (args.seed) scene.render.seed = *args.seed;
   if (args.camera) {
     // Checked as a scene's "pose" is: an isometry of the scene's space, within round-off.

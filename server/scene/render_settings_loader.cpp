@@ -35,7 +35,8 @@ nlohmann::ordered_json exposure_to_json(const Exposure& exposure) {
 
 RenderSettings read_render(const JsonNode& node) {
   node.expect_object({"width", "height", "max_depth", "spp", "seed", "ambient", "lighting",
-                      "light_sampling", "light_cutoff", "russian_roulette", "clamp", "exposure"});
+                      "light_sampling", "light_samples", "light_cutoff", "russian_roulette",
+                      "clamp", "exposure"});
   RenderSettings render;
   if (const auto n = node.find("width")) render.width = read_int(*n, 1, 8192);
   if (const auto n = node.find("height")) render.height = read_int(*n, 1, 8192);
@@ -49,6 +50,8 @@ RenderSettings read_render(const JsonNode& node) {
   if (const auto n = node.find("light_sampling"))
     render.light_sampling = read_choice<LightSampling>(
         *n, {{"mis", LightSampling::Mis}, {"bsdf", LightSampling::Bsdf}, {"light", LightSampling::Light}});
+  if (const auto n = node.find("light_samples"))
+    render.light_samples = read_int(*n, 1, kMaxLightSamples);
   if (const auto n = node.find("light_cutoff")) render.light_cutoff = read_positive(*n);
   if (const auto n = node.find("clamp")) render.clamp = read_positive(*n);
   if (const auto n = node.find("exposure")) {

@@ -101,6 +101,7 @@ struct Exposure {
   bool operator==(const Exposure&) const = default;
 };
 constexpr double kMaxExposureStops = 20;
+constexpr int kMaxLightSamples = 8;  // MAX_LIGHT_SAMPLES (shaders/common/gpu_types.h)
 
 struct RenderSettings {
   int width = 512;
@@ -119,6 +120,10 @@ struct RenderSettings {
   // way round) whose centre is within this geodesic distance of the shading point. 0: the
   // default (see docs/scene-format.md).
   double light_cutoff = 0;
+  // Light samples next-event estimation takes at each vertex, all of one emitter and through
+  // one walk over its images (docs/scene-format.md): worth more than one where a light has
+  // many images of like weight (the Poincare sphere), never where it has one.
+  int light_samples = 1;
   // Largest luminance one sample may add (fireflies); 0: no clamp, the unbiased default.
   double clamp = 0;
   Exposure exposure;

@@ -185,6 +185,9 @@ struct CellFace {
   uint pad2;
 };
 
+// The most light samples next-event estimation takes at one vertex (render.light_samples).
+#define MAX_LIGHT_SAMPLES 8u
+
 // The per-render uniform block (std140).
 struct FrameUniforms {
   mat4 camera_pose;    // camera frame -> model isometry
@@ -204,7 +207,7 @@ struct FrameUniforms {
   uint emitter_count;
   float light_cutoff;     // geodesic distance (1e30: none)
   float clamp_luminance;  // largest sample luminance; 0: no clamp
-  uint pad0;
+  uint light_samples;     // next-event estimates per vertex, 1 .. MAX_LIGHT_SAMPLES
 };
 
 // Which samples one dispatch adds, [start, start + count), to which pixels: a rectangle of

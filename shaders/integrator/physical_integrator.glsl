@@ -1,9 +1,9 @@
 // The physical model: unbiased path tracing of the Riemannian rendering equation (eq. 2.4).
 // At each vertex: emission (weighted against light sampling by the power heuristic when a
-// smooth BSDF sample found it), next-event estimation towards one light sample (its last
-// vertex uses light sampling alone), then a BSDF-sampled bounce; Russian roulette from the
-// third bounce. max_depth counts bounces as in the paper's model: light reaches the camera
-// over at most max_depth + 2 geodesic segments.
+// smooth BSDF sample found it), next-event estimation by frame.light_samples light samples
+// (its last vertex uses light sampling alone), then a BSDF-sampled bounce; Russian roulette
+// from the third bounce. max_depth counts bounces as in the paper's model: light reaches the
+// camera over at most max_depth + 2 geodesic segments.
 #ifndef PHYSICAL_INTEGRATOR_GLSL
 #define PHYSICAL_INTEGRATOR_GLSL
 
@@ -42,8 +42,12 @@ bool occludedTowards(Surface s, LightSample ls) {
   return reach > 0.0 && occluded(shadow, reach);
 }
 
-// Direct light at s by one light sample: f cos L / pdf, weighted against BSDF sampling
-// unless light sampling alone is asked for.
+// Direct light at s by frame.light_samples light samples of one emitter: their mean f cos L /
+// pdf, each weighted against BSDF sampling (the power heuristic with the light strategy's
+// sample count, Veach's n_i p_i) unless light sampling alone is asked for. The samples share the
+// emitter and the walk over its images (chooseImages); sample k takes the pixel's point on the
+// light rotated by k steps of the R2 sequence, uniform on its own. A point light's sample is
+// its image's alone: one the choice repeats (they come in order) is not traced again.
 vec3 nextEventEstimate(Surface s, LocalFrame local, vec3 n, vec3 wo, Material m, bool last,
                        bool lightOnly, PathSampler samples, uint depth) {
 #if defined(HAS_SPHERE_EMITTERS) || defined(HAS_TRIANGLE_EMITTERS) || \
@@ -52,17 +56,38 @@ vec3 nextEventEstimate(Surface s, LocalFrame local, vec3 n, vec3 wo, Material m,
 #else
   const vec2 onLight = vec2(0.0);  // point lights have no extent to sample
 #endif
-  vec4 u = vec4(bounceSample(samples, depth, PAIR_LIGHT_CHOICE), onLight);
-  LightSample ls;
-  if (!sampleLight(s.position, s.geometricNormal, local, u, ls)) return vec3(0.0);
-  vec3 wi = toLocal(local, ls.direction);
-  float cosI = dot(wi, n);
-  if (cosI <= 0.0 || modelInner(ls.direction, s.geometricNormal) <= 0.0) return vec3(0.0);
-  BsdfValue bsdf = bsdfEvaluate(m, n, wo, wi);
-  if (max(bsdf.f.r, max(bsdf.f.g, bsdf.f.b)) <= 0.0) return vec3(0.0);
-  if (occludedTowards(s, ls)) return vec3(0.0);
-  float weight = ls.point || last || lightOnly ? 1.0 : powerHeuristic(ls.pdf, bsdf.pdf);
-  return bsdf.f * cosI * ls.radiance * (weight / ls.pdf);
+  if (EMITTER_COUNT == 0u) return vec3(0.0);
+  vec2 choice = bounceSample(samples, depth, PAIR_LIGHT_CHOICE);
+  uint index = chooseEmitter(choice.x);
+  uint images[MAX_LIGHT_SAMPLES], branches[MAX_LIGHT_SAMPLES];
+  float choices[MAX_LIGHT_SAMPLES];
+  float count = float(frame.light_samples);
+  uint chosen = chooseImages(emitters[index], s.position, s.geometricNormal, choice.y,
+                             frame.light_samples, images, branches, choices);
+  bool point = emitters[index].kind == EMITTER_POINT;
+  vec3 sum = vec3(0.0), previous = vec3(0.0);
+  for (uint k = 0u; k < chosen; ++k) {
+    if (point && k > 0u && images[k] == images[k - 1u] && branches[k] == branches[k - 1u]) {
+      sum += previous;
+      continue;
+    }
+    previous = vec3(0.0);
+    vec2 rotated = fract(onLight + float(k) * vec2(0.7548776662, 0.5698402910));
+    LightSample ls;
+    if (!sampleLightImage(index, images[k], branches[k], choices[k], s.position,
+                          s.geometricNormal, local, rotated, ls))
+      continue;
+    vec3 wi = toLocal(local, ls.direction);
+    float cosI = dot(wi, n);
+    if (cosI <= 0.0 || modelInner(ls.direction, s.geometricNormal) <= 0.0) continue;
+    BsdfValue bsdf = bsdfEvaluate(m, n, wo, wi);
+    if (max(bsdf.f.r, max(bsdf.f.g, bsdf.f.b)) <= 0.0) continue;
+    if (occludedTowards(s, ls)) continue;
+    float weight = ls.point || last || lightOnly ? 1.0 : powerHeuristic(count * ls.pdf, bsdf.pdf);
+    previous = bsdf.f * cosI * ls.radiance * (weight / (count * ls.pdf));
+    sum += previous;
+  }
+  return sum;
 }
 #endif
 
@@ -91,8 +116,9 @@ vec3 physicalRadiance(GeodesicRay ray, PathSampler samples) {
         float density = lightPdf(s.emitter, from, heading, travelled + s.t, cosLight);
         // Light sampling alone, or past the last bounce, where the NEE sample took this segment
         // with full weight: what it can sample is its own (a copy past the cutoff is not).
-        weight = lightOnly || depth > frame.max_depth ? (density > 0.0 ? 0.0 : 1.0)
-                                                      : powerHeuristic(bsdfDensity, density);
+        weight = lightOnly || depth > frame.max_depth
+                     ? (density > 0.0 ? 0.0 : 1.0)
+                     : powerHeuristic(bsdfDensity, float(frame.light_samples) * density);
       }
 #endif
       radiance += throughput * m.emission.rgb * weight;

@@ -127,36 +127,55 @@ struct LightSample {
   bool point;
 };
 
-// One light sample seen from x (unit local frame `local` at x, geometric normal ng); false
-// when none applies.
-bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) {
-  ls = LightSample(vec4(0.0), vec4(0.0), 0.0, vec4(0.0), 0.0, vec4(0.0), vec3(0.0), 0.0, false);
-  if (EMITTER_COUNT == 0u) return false;
-  uint index = chooseEmitter(u.x);
-  Emitter e = emitters[index];
-  // An image and branch in proportion to their weights, by inverting their running sum at
-  // u.y: the map from u.y to the choice is monotone, so samples stratified in u.y (the pixel's
-  // Sobol points, common/sampler.glsl) choose every image in close to its share.
+// `count` images of emitter e and their branches, chosen by their weights seen from x:
+// systematic sampling of the running sum of the weights at (k + u) / count of the total, k <
+// count, so that each choice alone is in proportion to its weight, and together they cover the
+// images as evenly as count samples can (an image of weight w is chosen floor or ceil of count
+// w / total times). One walk over the images serves them all. The map from u to the choices is
+// monotone, so samples stratified in u (the pixel's Sobol points, common/sampler.glsl) choose
+// every image in close to its share. Returns count, or 0 when no image brings anything.
+uint chooseImages(Emitter e, vec4 x, vec4 ng, float u, uint count,
+                  out uint images[MAX_LIGHT_SAMPLES], out uint branches[MAX_LIGHT_SAMPLES],
+                  out float choices[MAX_LIGHT_SAMPLES]) {
   float total = 0.0;
   for (uint j = 0u; j < e.image_count; ++j) {
     vec2 weights = imageWeights(e, x, lightImages[e.image_begin + j].center, ng);
     total += weights.x + weights.y;
   }
-  if (total <= 0.0) return false;
-  float target = u.y * total, w = 0.0;
-  uint image = e.image_count, branch = 0u;
-  for (uint j = 0u; j < e.image_count && target >= 0.0; ++j) {
+  if (total <= 0.0) return 0u;
+  uint k = 0u, image = 0u, branch = 0u;
+  float running = 0.0, weight = 0.0;
+  for (uint j = 0u; j < e.image_count && k < count; ++j) {
     vec2 weights = imageWeights(e, x, lightImages[e.image_begin + j].center, ng);
-    for (uint b = 0u; b < branchCount() && target >= 0.0; ++b) {
+    for (uint b = 0u; b < branchCount(); ++b) {
       if (weights[b] <= 0.0) continue;
-      image = j;  // the last one with weight, should rounding leave target past the sum
+      image = j;
       branch = b;
-      w = weights[b];
-      target -= w;
+      weight = weights[b];
+      running += weight;
+      for (; k < count && (float(k) + u) * total < running * float(count); ++k) {
+        images[k] = image;
+        branches[k] = branch;
+        choices[k] = weight / total;
+      }
     }
   }
-  if (image == e.image_count) return false;
-  float choice = w / total;
+  // Targets that rounding left past the float sum take the last image with weight.
+  for (; k < count; ++k) {
+    images[k] = image;
+    branches[k] = branch;
+    choices[k] = weight / total;
+  }
+  return count;
+}
+
+// The light sample of emitter `index` through its image `image` on branch `branch`, chosen
+// with probability `choice` (chooseImages), seen from x (unit local frame `local` at x);
+// onLight picks the point on an area light. False when none applies.
+bool sampleLightImage(uint index, uint image, uint branch, float choice, vec4 x, vec4 ng,
+                      LocalFrame local, vec2 onLight, out LightSample ls) {
+  ls = LightSample(vec4(0.0), vec4(0.0), 0.0, vec4(0.0), 0.0, vec4(0.0), vec3(0.0), 0.0, false);
+  Emitter e = emitters[index];
 #if defined(HAS_HOROSPHERE_EMITTERS)
   if (e.kind == EMITTER_HOROSPHERE) {
     // Directions towards the horoball: the cone about the tangent towards its ideal point,
@@ -165,7 +184,7 @@ bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) 
     float cosMax = horosphereConeCos(x, l);
     vec3 axis = cosMax > -1.0 ? toLocal(local, normalizeTangent(x, l + modelInner(x, l) * x))
                               : vec3(0.0, 0.0, 1.0);
-    ls.direction = fromLocal(local, sampleUniformCone(axis, cosMax, u.zw));
+    ls.direction = fromLocal(local, sampleUniformCone(axis, cosMax, onLight));
     // Past the offset from x's surface, as BSDF samples leave it: on the horosphere itself the
     // geodesic's own root at 0 is not a light point.
     float t = intersectHorosphere(x, ls.direction, l, surfaceOffsetLength(x), FAR);
@@ -203,7 +222,7 @@ bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) 
     // Directions towards the sphere: the cone it subtends.
     float cosMax = sphereConeCos(e, d);
     vec3 axis = cosMax > -1.0 ? sign * toLocal(local, toward) : vec3(0.0, 0.0, 1.0);
-    ls.direction = fromLocal(local, sampleUniformCone(axis, cosMax, u.zw));
+    ls.direction = fromLocal(local, sampleUniformCone(axis, cosMax, onLight));
     float t = intersectGeodesicSphere(x, ls.direction, c, e.radius, 0.0, FAR);
     if (t <= 0.0) return false;
     ls.distance = t;
@@ -217,7 +236,7 @@ bool sampleLight(vec4 x, vec4 ng, LocalFrame local, vec4 u, out LightSample ls) 
 #endif
 #if defined(HAS_TRIANGLE_EMITTERS)
   // Triangle: a point by area, in the chart around its centroid.
-  vec2 bary = sampleUniformTriangle(u.zw);
+  vec2 bary = sampleUniformTriangle(onLight);
   vec3 xc = e.corner.xyz + bary.x * e.edge1.xyz + bary.y * e.edge2.xyz;
   mat4 place = g * translationTo(e.center);
   vec4 q = liftChart(xc);

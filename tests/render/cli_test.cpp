@@ -130,6 +130,8 @@ TEST(Cli, BadInputFailsWithAMessageNamingTheProblem) {
   const Case cases[] = {
       {cornell + " -o x.tiff --spp 1", "unsupported output format \".tiff\""},
       {cornell + " -o x.png --spp 0", "--spp: must be an integer in [1, 16777216], not \"0\""},
+      {cornell + " -o x.png --light-samples 9",
+       "--light-samples: must be an integer in [1, 8], not \"9\""},
       {cornell + " -o x.png --spp 2 --time 3", "--spp and --time: give one, not both"},
       {cornell + " -o x.png --spp 2 --target-error 0.1", "--spp and --target-error: give one"},
       {cornell + " -o x.png --time 2 --target-error 0.1", "--time and --target-error: give one"},

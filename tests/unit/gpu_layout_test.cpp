@@ -196,7 +196,7 @@ TEST(GpuLayout, EveryHostStructHasItsShaderStructsOffsetsAndStride) {
                 AT(FrameUniforms, camera_cell), AT(FrameUniforms, lighting),
                 AT(FrameUniforms, light_sampling), AT(FrameUniforms, emitter_count),
                 AT(FrameUniforms, light_cutoff), AT(FrameUniforms, clamp_luminance),
-                AT(FrameUniforms, pad0)}));
+                AT(FrameUniforms, light_samples)}));
   EXPECT_EQ(shader.structs.at("SampleRange"),
             (std::vector<Member>{AT(SampleRange, start), AT(SampleRange, count),
                                    AT(SampleRange, column_offset), AT(SampleRange, row_offset),

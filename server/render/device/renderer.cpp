@@ -1,5 +1,6 @@
 #include "render/device/renderer.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -69,6 +70,11 @@ bool Renderer::frame_outgrown(const Mat4& camera_pose) const {
 
 void Renderer::set_max_depth(int max_depth) {
   resources_.set_max_depth(uint32_t(max_depth));
+  samples_ = 0;
+}
+
+void Renderer::set_light_samples(int light_samples) {
+  resources_.set_light_samples(uint32_t(std::clamp(light_samples, 1, kMaxLightSamples)));
   samples_ = 0;
 }
 

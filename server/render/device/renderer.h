@@ -52,6 +52,7 @@ class Renderer {
   // this one (a walking camera: render/service/render_service.h).
   bool frame_outgrown(const Mat4& camera_pose) const;
   void set_max_depth(int max_depth);
+  void set_light_samples(int light_samples);  // clamped to 1 .. kMaxLightSamples
   int width() const { return int(resources_.width()); }
   int height() const { return int(resources_.height()); }
 

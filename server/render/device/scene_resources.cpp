@@ -2,6 +2,7 @@
 
 #include "render/prepare/scene_bindings.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -36,6 +37,9 @@ FrameUniforms make_uniforms(const Scene& scene, const PackedScene& packed) {
   u.emitter_count = static_cast<uint32_t>(packed.emitters.size());
   u.light_cutoff = static_cast<float>(packed.light_cutoff);
   u.clamp_luminance = static_cast<float>(scene.render.clamp);
+  static_assert(kMaxLightSamples == MAX_LIGHT_SAMPLES);
+  u.light_samples =
+      static_cast<uint32_t>(std::clamp(scene.render.light_samples, 1, kMaxLightSamples));
   return u;
 }
 
@@ -106,6 +110,12 @@ void SceneResources::set_view(const Mat4& camera_pose, uint32_t camera_cell, uin
 
 void SceneResources::set_max_depth(uint32_t max_depth) {
   uniforms_.max_depth = max_depth;
+  std::memcpy(frame_.mapped(), &uniforms_, sizeof(uniforms_));
+  clear_accumulation();
+}
+
+void SceneResources::set_light_samples(uint32_t light_samples) {
+  uniforms_.light_samples = std::clamp(light_samples, 1u, MAX_LIGHT_SAMPLES);
   std::memcpy(frame_.mapped(), &uniforms_, sizeof(uniforms_));
   clear_accumulation();
 }

@@ -54,9 +54,11 @@ void RenderSession::restart(bool now_moving) {
   }
   const int w = std::max(16, width / divisor);
   const int h = std::max(16, height / divisor);
-  // Moving frames also trace at most one bounce: direct light shows the shapes, and the
-  // indirect light comes back once the camera is still.
+  // Moving frames also trace at most one bounce, with one light sample per vertex: direct
+  // light shows the shapes, and the indirect light and the finer light sampling come back once
+  // the camera is still.
   renderer->set_max_depth(moving ? std::min(1, scene.render.max_depth) : scene.render.max_depth);
+  renderer->set_light_samples(moving ? 1 : scene.render.light_samples);
   pose = renderer->set_view(pose, w, h);
   truncated = 0;  // set_view clears the tracer's counters, all but the non-finite one
   reset_time = Clock::now();
