@@ -58,13 +58,13 @@ vec3 nextEventEstimate(Surface s, LocalFrame local, vec3 n, vec3 wo, Material m,
 #endif
   if (EMITTER_COUNT == 0u) return vec3(0.0);
   vec2 choice = bounceSample(samples, depth, PAIR_LIGHT_CHOICE);
-  uint index = chooseEmitter(choice.x);
+  Emitter e = emitters[chooseEmitter(choice.x)];
   uint images[MAX_LIGHT_SAMPLES], branches[MAX_LIGHT_SAMPLES];
   float choices[MAX_LIGHT_SAMPLES];
   float count = float(frame.light_samples);
-  uint chosen = chooseImages(emitters[index], s.position, s.geometricNormal, choice.y,
-                             frame.light_samples, images, branches, choices);
-  bool point = emitters[index].kind == EMITTER_POINT;
+  uint chosen = chooseImages(e, s.position, s.geometricNormal, choice.y, frame.light_samples,
+                             images, branches, choices);
+  bool point = e.kind == EMITTER_POINT;
   vec3 sum = vec3(0.0), previous = vec3(0.0);
   for (uint k = 0u; k < chosen; ++k) {
     if (point && k > 0u && images[k] == images[k - 1u] && branches[k] == branches[k - 1u]) {
@@ -74,8 +74,8 @@ vec3 nextEventEstimate(Surface s, LocalFrame local, vec3 n, vec3 wo, Material m,
     previous = vec3(0.0);
     vec2 rotated = fract(onLight + float(k) * vec2(0.7548776662, 0.5698402910));
     LightSample ls;
-    if (!sampleLightImage(index, images[k], branches[k], choices[k], s.position,
-                          s.geometricNormal, local, rotated, ls))
+    if (!sampleLightImage(e, images[k], branches[k], choices[k], s.position, s.geometricNormal,
+                          local, rotated, ls))
       continue;
     vec3 wi = toLocal(local, ls.direction);
     float cosI = dot(wi, n);

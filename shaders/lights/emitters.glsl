@@ -169,13 +169,12 @@ uint chooseImages(Emitter e, vec4 x, vec4 ng, float u, uint count,
   return count;
 }
 
-// The light sample of emitter `index` through its image `image` on branch `branch`, chosen
-// with probability `choice` (chooseImages), seen from x (unit local frame `local` at x);
-// onLight picks the point on an area light. False when none applies.
-bool sampleLightImage(uint index, uint image, uint branch, float choice, vec4 x, vec4 ng,
+// The light sample of emitter e through its image `image` on branch `branch`, chosen with
+// probability `choice` (chooseImages), seen from x (unit local frame `local` at x); onLight
+// picks the point on an area light. False when none applies.
+bool sampleLightImage(Emitter e, uint image, uint branch, float choice, vec4 x, vec4 ng,
                       LocalFrame local, vec2 onLight, out LightSample ls) {
   ls = LightSample(vec4(0.0), vec4(0.0), 0.0, vec4(0.0), 0.0, vec4(0.0), vec3(0.0), 0.0, false);
-  Emitter e = emitters[index];
 #if defined(HAS_HOROSPHERE_EMITTERS)
   if (e.kind == EMITTER_HOROSPHERE) {
     // Directions towards the horoball: the cone about the tangent towards its ideal point,

@@ -96,7 +96,7 @@ TEST(CatalogueScenes, RenderFiniteAndEveryRayEndsInTheCell) {
       EXPECT_GT(lit, size * size / 12) << "the spheres and their copies should fill part of the view";
       // Paths of 64 bounces, each bounce's geodesics up to the crossing cap: no sample may
       // come out NaN or infinite, however long the walk.
-      renderer.set_max_depth(64);
+      renderer.set_sampling(64, scene.render.light_samples);
       renderer.reset();
       renderer.add_samples(2);
       EXPECT_EQ(renderer.non_finite_samples(), 0u) << "at depth 64";

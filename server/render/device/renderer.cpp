@@ -1,6 +1,5 @@
 #include "render/device/renderer.h"
 
-#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -68,13 +67,8 @@ bool Renderer::frame_outgrown(const Mat4& camera_pose) const {
   return model::geodesic_distance(geometry_, model::origin(), seen) > frame_reach(geometry_);
 }
 
-void Renderer::set_max_depth(int max_depth) {
-  resources_.set_max_depth(uint32_t(max_depth));
-  samples_ = 0;
-}
-
-void Renderer::set_light_samples(int light_samples) {
-  resources_.set_light_samples(uint32_t(std::clamp(light_samples, 1, kMaxLightSamples)));
+void Renderer::set_sampling(int max_depth, int light_samples) {
+  resources_.set_sampling(uint32_t(max_depth), light_samples);
   samples_ = 0;
 }
 

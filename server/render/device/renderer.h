@@ -51,8 +51,9 @@ class Renderer {
   // has strayed so far from the frame's centre that a renderer built there should replace
   // this one (a walking camera: render/service/render_service.h).
   bool frame_outgrown(const Mat4& camera_pose) const;
-  void set_max_depth(int max_depth);
-  void set_light_samples(int light_samples);  // clamped to 1 .. kMaxLightSamples
+  // The bounces and the light samples per vertex (clamped to 1 .. kMaxLightSamples); starts
+  // over.
+  void set_sampling(int max_depth, int light_samples);
   int width() const { return int(resources_.width()); }
   int height() const { return int(resources_.height()); }
 

@@ -14,6 +14,12 @@ namespace {
 
 constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
 
+// Light samples per vertex as the shaders read them: 1 .. MAX_LIGHT_SAMPLES.
+uint32_t device_light_samples(int light_samples) {
+  static_assert(kMaxLightSamples == MAX_LIGHT_SAMPLES);
+  return static_cast<uint32_t>(std::clamp(light_samples, 1, kMaxLightSamples));
+}
+
 FrameUniforms make_uniforms(const Scene& scene, const PackedScene& packed) {
   FrameUniforms u{};
   u.camera_pose = packed.camera_pose.to_glsl();
@@ -37,9 +43,7 @@ FrameUniforms make_uniforms(const Scene& scene, const PackedScene& packed) {
   u.emitter_count = static_cast<uint32_t>(packed.emitters.size());
   u.light_cutoff = static_cast<float>(packed.light_cutoff);
   u.clamp_luminance = static_cast<float>(scene.render.clamp);
-  static_assert(kMaxLightSamples == MAX_LIGHT_SAMPLES);
-  u.light_samples =
-      static_cast<uint32_t>(std::clamp(scene.render.light_samples, 1, kMaxLightSamples));
+  u.light_samples = device_light_samples(scene.render.light_samples);
   return u;
 }
 
@@ -108,14 +112,9 @@ void SceneResources::set_view(const Mat4& camera_pose, uint32_t camera_cell, uin
   clear_accumulation();
 }
 
-void SceneResources::set_max_depth(uint32_t max_depth) {
+void SceneResources::set_sampling(uint32_t max_depth, int light_samples) {
   uniforms_.max_depth = max_depth;
-  std::memcpy(frame_.mapped(), &uniforms_, sizeof(uniforms_));
-  clear_accumulation();
-}
-
-void SceneResources::set_light_samples(uint32_t light_samples) {
-  uniforms_.light_samples = std::clamp(light_samples, 1u, MAX_LIGHT_SAMPLES);
+  uniforms_.light_samples = device_light_samples(light_samples);
   std::memcpy(frame_.mapped(), &uniforms_, sizeof(uniforms_));
   clear_accumulation();
 }

@@ -57,9 +57,9 @@ class SceneResources {
   void load_accumulation(const float* sums);
   // New camera and/or a resolution up to the allocated one (reduced while moving); clears.
   void set_view(const Mat4& camera_pose, uint32_t camera_cell, uint32_t width, uint32_t height);
-  void set_max_depth(uint32_t max_depth);
-  // Light samples per vertex (render.light_samples), 1 .. MAX_LIGHT_SAMPLES; clears.
-  void set_light_samples(uint32_t light_samples);
+  // The bounces and the light samples per vertex (render.max_depth, render.light_samples, the
+  // latter clamped to 1 .. MAX_LIGHT_SAMPLES); clears.
+  void set_sampling(uint32_t max_depth, int light_samples);
   // Rays traced since the last clear, summed over pixels.
   uint64_t traced_rays() const;
   // Samples the integrator dropped for being NaN or infinite, since the scene was loaded.

@@ -211,10 +211,8 @@ SceneInfo RenderService::apply_settings(SessionId id, const SessionSettings& set
   }
   s.width = width;
   s.height = height;
-  if (settings.max_depth != -1) {
-    s.scene.render.max_depth = settings.max_depth;
-    s.renderer->set_max_depth(settings.max_depth);
-  }
+  // A new depth reaches the renderer through the restart below.
+  if (settings.max_depth != -1) s.scene.render.max_depth = settings.max_depth;
   if (settings.exposure) s.set_exposure(*settings.exposure);
   const bool view_changed = settings.width || settings.height || settings.max_depth != -1;
   if (view_changed || !settings.exposure) s.restart(false);

@@ -57,8 +57,8 @@ void RenderSession::restart(bool now_moving) {
   // Moving frames also trace at most one bounce, with one light sample per vertex: direct
   // light shows the shapes, and the indirect light and the finer light sampling come back once
   // the camera is still.
-  renderer->set_max_depth(moving ? std::min(1, scene.render.max_depth) : scene.render.max_depth);
-  renderer->set_light_samples(moving ? 1 : scene.render.light_samples);
+  renderer->set_sampling(moving ? std::min(1, scene.render.max_depth) : scene.render.max_depth,
+                         moving ? 1 : scene.render.light_samples);
   pose = renderer->set_view(pose, w, h);
   truncated = 0;  // set_view clears the tracer's counters, all but the non-finite one
   reset_time = Clock::now();
