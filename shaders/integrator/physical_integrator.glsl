@@ -64,7 +64,11 @@ vec3 nextEventEstimate(Surface s, LocalFrame local, vec3 n, vec3 wo, Material m,
   float count = float(frame.light_samples);
   uint chosen = chooseImages(e, s.position, s.geometricNormal, choice.y, frame.light_samples,
                              images, branches, choices);
+#if defined(HAS_POINT_LIGHTS)
   bool point = e.kind == EMITTER_POINT;
+#else
+  const bool point = false;  // no point lights: every sample is traced
+#endif
   vec3 sum = vec3(0.0), previous = vec3(0.0);
   for (uint k = 0u; k < chosen; ++k) {
     if (point && k > 0u && images[k] == images[k - 1u] && branches[k] == branches[k - 1u]) {
