@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -21,11 +22,14 @@ constexpr double kMaxSphericalCircumradius = 1.45;
 // E3 and H3 spaces are infinite groups: the search radius grows to twice the circumradius,
 // but gives up after this many doublings of the generators' displacement.
 constexpr int kMaxGrowth = 12;
-// In H3 the search radius stops here: the products of isometries reaching further lose so much
-// double precision that two words for one element no longer agree (the powers of a single
-// translation by 1 stop matching beyond distance 10, and the group then looked as if it fixed
-// a point). Every H3 space of the catalogue and of Curved Spaces closes its cell well within it
-// (CurvedSpacesFiles.*), so a cell still open here is an unbounded domain.
+// In H3 no product reaching beyond this distance is enumerated: it loses so much double
+// precision that two words for one element no longer agree (the powers of a single
+// translation by 1 stop matching beyond distance 10, those of a translation by 12 already at
+// 24, and the group then looks as if it fixed a point or had twice its elements).
+constexpr double kHyperbolicPrecision = 10;
+// The search radius stops here, short of that: slack for detours. Every H3 space of the
+// catalogue and of Curved Spaces closes its cell well within it (CurvedSpacesFiles.*), so a
+// cell still open here is an unbounded domain.
 constexpr double kHyperbolicReach = 8;
 // Planes of a cell still unbounded after this many are not closing it (make_polyhedron is
 // quartic in the plane count; the scene format allows 64 faces).
@@ -171,6 +175,12 @@ Attempt attempt(GeometryKind kind, const std::vector<Mat4>& generators, const Ve
   // Enumerate (all of S3's finite group; a ball in E3 and H3) until the ball holds every
   // element whose bisector is within the cell's circumradius R.
   step = std::max(step, 1e-6);
+  if (kind == GeometryKind::Hyperbolic && step > kHyperbolicPrecision) {
+    char figures[96];
+    std::snprintf(figures, sizeof figures, "%.6g, beyond distance %g", step, kHyperbolicPrecision);
+    fail(std::string("the shortest generator (after shortening the set) moves the base point by ") +
+         figures + ", within which double precision tells the elements of an H3 group apart");
+  }
   double radius = kind == GeometryKind::Spherical ? 2 * std::numbers::pi : step;
   std::optional<GroupOrbit> orbit;
   Cell cell;
@@ -181,8 +191,11 @@ Attempt attempt(GeometryKind kind, const std::vector<Mat4>& generators, const Ve
     // Words whose prefixes stray beyond the ball: half the circumradius of detour is allowed
     // (a wider margin costs e^(2 margin) elements in H3); validation catches a short count.
     const double slack = std::isfinite(cell.circumradius) ? cell.circumradius / 2 : step;
+    const double orbit_limit = kind == GeometryKind::Hyperbolic
+                                   ? std::min(radius + slack, kHyperbolicPrecision)
+                                   : radius + slack;
     try {
-      orbit.emplace(kind, moved, options.max_elements, radius + slack);
+      orbit.emplace(kind, moved, options.max_elements, orbit_limit);
     } catch (const GroupOrbit::TooLarge&) {
       // A cell still open after growing: a discrete group with an unbounded domain (two
       // translations in E3) runs into the cap as surely as a dense one does.
@@ -190,7 +203,7 @@ Attempt attempt(GeometryKind kind, const std::vector<Mat4>& generators, const Ve
         fail_unbounded(kind, "the cell was still open when the enumeration reached " +
                                  std::to_string(options.max_elements) + " elements");
       fail("the group enumeration exceeded " + std::to_string(options.max_elements) +
-           " elements (within distance " + std::to_string(radius + slack) +
+           " elements (within distance " + std::to_string(orbit_limit) +
            " of the base point): the group is not discrete, or its domain is huge");
     }
     cell = dirichlet_cell(kind, *orbit, options.tolerance);

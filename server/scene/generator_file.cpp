@@ -175,22 +175,51 @@ std::string row_structure_fault(std::string_view row, bool units) {
   return depth > 0 ? "a \"(\" is not closed" : "";
 }
 
+// The first entry in text outside every row (a number, or with `units` an imaginary unit
+// standing alone), with its line counted from `line`; empty when there is none.
+std::pair<std::string, int> stray_entry(std::string_view text, int line, bool units) {
+  if (const auto numbers = number_tokens(text); !numbers.empty())
+    return {std::string(numbers[0].first.substr(0, 40)), line + numbers[0].second - 1};
+  for (std::size_t k = 0; units && k < text.size(); ++k) {
+    if (text[k] == '\n') ++line;
+    if (!is_alpha(text[k]) || (k > 0 && (is_alpha(text[k - 1]) || is_digit(text[k - 1]))))
+      continue;
+    std::size_t end = k;
+    while (end < text.size() && (is_alpha(text[end]) || is_digit(text[end]))) ++end;
+    const std::string_view word = text.substr(k, end - k);
+    if (word == "I" || word == "i" || word == "j") return {std::string(word), line};
+  }
+  return {};
+}
+
 // Refuses anything inside a row (an innermost [...]) that is not part of an entry: a word
 // other than an exponent or an imaginary unit (`units`: Moebius text only), a character
 // other than digits, signs, '.', '*', separators (whitespace , ; ( )), or those characters
 // out of place (row_structure_fault), or a row of other than `size` entries (a size x size
-// matrix: 2 for Moebius text, 4 for O(3,1) rows). Words outside rows
-// ("Matrix", "conj") stay separators.
+// matrix: 2 for Moebius text, 4 for O(3,1) rows). Words outside rows ("Matrix", "conj") stay
+// separators, but an entry outside every row is refused: the readers take every entry in
+// the text, so it would silently become part of a matrix.
 void check_rows(std::string_view text, const std::string& source, bool units,
                 std::size_t size) {
-  std::size_t open = std::string_view::npos, rows = 0;
-  int line = 1, open_line = 1;
+  std::size_t open = std::string_view::npos, rows = 0, outside = 0;
+  int line = 1, open_line = 1, outside_line = 1;
+  const auto check_outside = [&](std::size_t end) {
+    const auto [entry, at] = stray_entry(text.substr(outside, end - outside), outside_line, units);
+    if (!entry.empty())
+      fail(source, rows / size, at,
+           "\"" + entry + "\" lies outside every row [...]: entries belong inside rows");
+  };
   for (std::size_t i = 0; i < text.size(); ++i) {
     if (i % 4096 == 4095) check_preparation_budget();
     const char c = text[i];
     if (c == '\n') ++line;
+    if (c == '[' || (c == ']' && open == std::string_view::npos)) {
+      check_outside(i);
+      outside = i + 1, outside_line = line;
+    }
     if (c == '[') open = i, open_line = line;
     if (c != ']' || open == std::string_view::npos) continue;
+    outside = i + 1, outside_line = line;
     const std::string_view row = text.substr(open + 1, i - open - 1);
     const std::string shown =
         "[" + std::string(row.substr(0, 60)) + (row.size() > 60 ? "..." : "") + "]";
@@ -226,6 +255,7 @@ void check_rows(std::string_view text, const std::string& source, bool units,
     open = std::string_view::npos;
     ++rows;
   }
+  check_outside(text.size());  // also after a "[" that no "]" closed
 }
 
 // SnapPy: every number in the text, 16 to a matrix, row by row, time coordinate first.

@@ -36,8 +36,8 @@ inline constexpr double kGeneratorTolerance = 1e-6;
 // Parses any format (Moebius when the first [...] row holds two entries, else SnapPy's O(3,1)
 // when the text contains '['). `source` names the text in errors, which throw SceneError as
 // "<source>: matrix <i> (line <l>): <reason>": not 4x4, not a number, NaN or infinite, a word
-// or character inside a row's [...] that is not part of an entry (junk is refused by name
-// here, not left to the group's enumeration), not an isometry of any model, or geometries
+// or character inside a row's [...] that is not part of an entry, or an entry outside every
+// row (junk is refused by name here, not left to the group's enumeration), not an isometry of any model, or geometries
 // that differ between matrices. A text without matrices is an error too (the whole space
 // needs none).
 GeneratorSet parse_generators(std::string_view text, const std::string& source);

@@ -1,6 +1,7 @@
 #include "scene/group_orbit.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "scene/preparation_budget.h"
@@ -12,7 +13,13 @@ namespace {
 // points of a discrete group lie at least twice the Dirichlet domain's in-radius apart, many
 // orders of magnitude more; one re-orthonormalised product errs by about 1e-15.
 constexpr double kSamePoint = 1e-7;
-constexpr double kCell = 1e-4;  // hash grid spacing, coarser than kSamePoint
+// The hash grid is laid over a point's coordinates divided by its size (size_of), which lie in
+// [-1, 1] however far the point is (cosh of the displacement in H3 overflows any integer grid
+// of absolute cells far out). Two points p, q within kSamePoint * size of each other differ
+// there by at most 2 kSamePoint / (1 - kSamePoint): |p/Sp - q/Sq| <= |p - q|/Sp +
+// |Sp - Sq|/Sp, and size_of is 1-Lipschitz in the max-norm.
+constexpr double kCell = 1e-5;                   // grid spacing, coarser than that reach
+constexpr double kReach = 2.5 * kSamePoint;      // that reach, with room for rounding
 
 double max_abs_difference(const Mat4& a, const Mat4& b) {
   double m = 0;
@@ -40,6 +47,12 @@ struct Shortened {
   Mat4 g;
   double length;
 };
+
+// The point's coordinates in grid cells: within +-1 / kCell.
+std::array<double, 4> grid_coordinates(const Vec4& p) {
+  const double size = size_of(p);
+  return {p.x / size / kCell, p.y / size / kCell, p.z / size / kCell, p.w / size / kCell};
+}
 
 }  // namespace
 
@@ -110,10 +123,10 @@ GroupOrbit::GroupOrbit(GeometryKind kind, const std::vector<Mat4>& generators,
 }
 
 GroupOrbit::Key GroupOrbit::key(const Vec4& p, int corner) const {
-  const double x[4] = {p.x, p.y, p.z, p.w};
+  const std::array<double, 4> x = grid_coordinates(p);
   Key k = 0;
   for (int i = 0; i < 4; ++i) {
-    const double s = x[i] / kCell;
+    const double s = x[i];
     long long q = static_cast<long long>(std::floor(s));
     // Corner bit i: also look in the neighbouring cell nearest to the point.
     if (corner >> i & 1) q += s - std::floor(s) < 0.5 ? -1 : 1;
@@ -123,15 +136,16 @@ GroupOrbit::Key GroupOrbit::key(const Vec4& p, int corner) const {
 }
 
 int GroupOrbit::find(const Vec4& point) const {
+  if (!std::isfinite(max_abs(point))) return -1;  // every known image is finite
   const double tolerance = kSamePoint * size_of(point);
-  // A point within `tolerance` of this one lies in the next cell along axis i only if this one
-  // lies that near the side of its cell: look there alone (usually one cell, not 16). Twice
-  // the tolerance, for the rounding of the fractions.
-  const double x[4] = {point.x, point.y, point.z, point.w};
+  // A point within `tolerance` of this one lies in the next grid cell along axis i only if
+  // this one lies within kReach of the side of its cell: look there alone (usually one cell,
+  // not 16).
+  const std::array<double, 4> x = grid_coordinates(point);
   int near_sides = 0;
   for (int i = 0; i < 4; ++i) {
-    const double s = x[i] / kCell, f = s - std::floor(s);
-    if (std::min(f, 1 - f) * kCell < 2 * tolerance) near_sides |= 1 << i;
+    const double f = x[i] - std::floor(x[i]);
+    if (std::min(f, 1 - f) * kCell < kReach) near_sides |= 1 << i;
   }
   for (int corner = 0; corner < 16; ++corner) {
     if (corner & ~near_sides) continue;
@@ -146,7 +160,7 @@ int GroupOrbit::find(const Vec4& point) const {
 void GroupOrbit::add(const Mat4& g, double limit) {
   const Vec4 point = g * model::origin();
   const double d = displacement(kind_, point);
-  if (d > limit) {
+  if (!(d <= limit)) {  // also a product that overflowed (NaN or infinite)
     beyond_ = true;
     return;
   }

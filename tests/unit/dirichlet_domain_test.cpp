@@ -246,6 +246,20 @@ TEST(DirichletDomain, NonCompactAndEmptyInputs) {
       EXPECT_EQ(std::string(e.what()).find("not discrete"), std::string::npos) << e.what();
     }
   }
+  // Generators moving the origin beyond double precision's reach in H3 (the fuzzer's Moebius
+  // matrix with an entry 1.9e11 moved it by 26): said so at once, with the distance, instead
+  // of enumerating products whose images overflowed the orbit's hash grid.
+  const Mat4 far = model::translation(GeometryKind::Hyperbolic, {0, 26, 0});
+  const Mat4 farther = model::translation(GeometryKind::Hyperbolic, {27, 0, 0});
+  try {
+    dirichlet_domain(GeometryKind::Hyperbolic, {farther, far});
+    FAIL() << "generators moving the origin by 26";
+  } catch (const SceneError& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "generators: the shortest generator (after shortening the set) moves the base "
+              "point by 26, beyond distance 10, within which double precision tells the "
+              "elements of an H3 group apart");
+  }
 }
 
 // Curved Spaces' files: every one parses and gives a valid domain whose volume matches the

@@ -140,6 +140,19 @@ TEST(GeneratorFile, RefusesJunkInsideARowByName) {
   EXPECT_NE(error_of("[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 2*, 1]]")
                 .find("matrix 1 (line 1): a \"*\" is not followed by an imaginary unit"),
             std::string::npos);
+  // Entries outside every row would be read into a matrix: refused by name. A fuzzer's
+  // unclosed row read "1 186602540378" into a Moebius matrix moving the origin by 26.
+  EXPECT_EQ(error_of("# m004\n[1 ?186602540378n\n[1 (1-2j)]]"),
+            "test.gen: matrix 1 (line 2): \"1\" lies outside every row [...]: entries belong "
+            "inside rows");
+  EXPECT_EQ(error_of("[[1, 1], [0, 1]] 2\n[[1, 0], [0, 1]]"),
+            "test.gen: matrix 2 (line 1): \"2\" lies outside every row [...]: entries belong "
+            "inside rows");
+  EXPECT_NE(error_of("[[1, 1], j [0, 1]]").find("\"j\" lies outside every row"),
+            std::string::npos);
+  EXPECT_NE(error_of("[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]], [0.5").find(
+                "matrix 2 (line 1): \"0.5\" lies outside every row"),
+            std::string::npos);
   // Exponents, units, Python's complex literals and words outside rows still read.
   const GeneratorSet set = parse_generators(
       "G = [Matrix([[1, 1.5e-1j], [0, 1]]), conj Matrix([[(1+0j), 0], [0, 1E+0]])]", "m.txt");

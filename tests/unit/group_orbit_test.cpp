@@ -1,9 +1,9 @@
 // GroupOrbit::find, which tells a newly enumerated element from one already known by its image
 // of the origin: every point within the tolerance (1e-7 of the point's size) of a known image is
 // that element, wherever the two fall in the hash grid, and a point a few tolerances away is
-// none. The integer lattice of E3 puts every image exactly on the sides of its grid cell, on
-// all four axes at once; in H3 the mirrored right-angled dodecahedron's images go out to
-// coordinates of about 27.
+// none. The integer lattice of E3 puts its images on many cells' sides at once; in H3 the
+// mirrored right-angled dodecahedron's images go out to coordinates of about 27, and the powers
+// of one long translation to cosh(240), beyond any integer grid of absolute cells.
 #include "scene/group_orbit.h"
 
 #include <gtest/gtest.h>
@@ -60,6 +60,38 @@ TEST(GroupOrbit, FindsImagesFarOutInH3) {
   for (const GroupElement& e : orbit.elements()) farthest = std::max(farthest, e.point.w);
   EXPECT_GT(farthest, 20.0);
   expect_found_across_cell_sides(orbit);
+}
+
+TEST(GroupOrbit, EnumeratesFarBeyondTheRangeOfAnyIntegerGrid) {
+  // Long translations out to distances where coordinates reach cosh(240) ~ 1e104 or overflow
+  // (generator text with entries near 1e17 went there). Double precision no longer tells the
+  // elements apart so far out (dirichlet_domain enumerates H3 only within distance 10), so
+  // what is found varies, but the enumeration stays well defined: it ends with finite images
+  // only, each found again from every side of its grid cell, or it reports a fixed point or
+// too many elements.
+  const auto kH3 = GeometryKind::Hyperbolic;
+  int enumerated = 0;
+  for (double step : {20.0, 40.0, 300.0})
+    for (double limit : {5 * step + 5, 1e6}) {
+      try {
+        const GroupOrbit orbit(kH3, {model::translation(kH3, Vec3{step, 0, 0})}, 1000, limit);
+        ++enumerated;
+        EXPECT_FALSE(orbit.complete()) << step << " " << limit;
+        ASSERT_GE(orbit.elements().size(), 3u) << step << " " << limit;
+        for (const GroupElement& e : orbit.elements()) {
+          EXPECT_TRUE(std::isfinite(max_abs(e.point))) << step << " " << limit;
+          EXPECT_LE(e.displacement, limit);
+        }
+        expect_found_across_cell_sides(orbit);
+      } catch (const GroupOrbit::Stabilised&) {
+      } catch (const GroupOrbit::TooLarge&) {
+      }
+    }
+  EXPECT_GT(enumerated, 0);
+  const GroupOrbit near(kH3, {model::translation(kH3, Vec3{1, 0, 0})}, 1000, 5.5);
+  EXPECT_EQ(near.elements().size(), 11u);
+  EXPECT_EQ(near.find(Vec4{NAN, 0, 0, 1}), -1);
+  EXPECT_EQ(near.find(Vec4{0, 0, 0, INFINITY}), -1);
 }
 
 }  // namespace
