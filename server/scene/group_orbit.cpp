@@ -48,6 +48,10 @@ struct Shortened {
   double length;
 };
 
+bool finite(const Vec4& p) {
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && std::isfinite(p.w);
+}
+
 // The point's coordinates in grid cells: within +-1 / kCell.
 std::array<double, 4> grid_coordinates(const Vec4& p) {
   const double size = size_of(p);
@@ -136,7 +140,7 @@ GroupOrbit::Key GroupOrbit::key(const Vec4& p, int corner) const {
 }
 
 int GroupOrbit::find(const Vec4& point) const {
-  if (!std::isfinite(max_abs(point))) return -1;  // every known image is finite
+  if (!finite(point)) return -1;  // every known image is finite
   const double tolerance = kSamePoint * size_of(point);
   // A point within `tolerance` of this one lies in the next grid cell along axis i only if
   // this one lies within kReach of the side of its cell: look there alone (usually one cell,
@@ -160,7 +164,7 @@ int GroupOrbit::find(const Vec4& point) const {
 void GroupOrbit::add(const Mat4& g, double limit) {
   const Vec4 point = g * model::origin();
   const double d = displacement(kind_, point);
-  if (!(d <= limit)) {  // also a product that overflowed (NaN or infinite)
+  if (!(d <= limit) || !finite(point)) {  // also a product that overflowed
     beyond_ = true;
     return;
   }

@@ -79,7 +79,8 @@ TEST(GroupOrbit, EnumeratesFarBeyondTheRangeOfAnyIntegerGrid) {
         EXPECT_FALSE(orbit.complete()) << step << " " << limit;
         ASSERT_GE(orbit.elements().size(), 3u) << step << " " << limit;
         for (const GroupElement& e : orbit.elements()) {
-          EXPECT_TRUE(std::isfinite(max_abs(e.point))) << step << " " << limit;
+          for (double x : {e.point.x, e.point.y, e.point.z, e.point.w})
+            EXPECT_TRUE(std::isfinite(x)) << step << " " << limit;
           EXPECT_LE(e.displacement, limit);
         }
         expect_found_across_cell_sides(orbit);
@@ -91,6 +92,7 @@ TEST(GroupOrbit, EnumeratesFarBeyondTheRangeOfAnyIntegerGrid) {
   const GroupOrbit near(kH3, {model::translation(kH3, Vec3{1, 0, 0})}, 1000, 5.5);
   EXPECT_EQ(near.elements().size(), 11u);
   EXPECT_EQ(near.find(Vec4{NAN, 0, 0, 1}), -1);
+  EXPECT_EQ(near.find(Vec4{0, NAN, 0, NAN}), -1);
   EXPECT_EQ(near.find(Vec4{0, 0, 0, INFINITY}), -1);
 }
 
