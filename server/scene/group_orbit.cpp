@@ -15,9 +15,9 @@ namespace {
 constexpr double kSamePoint = 1e-7;
 // The hash grid is laid over a point's coordinates divided by its size (size_of), which lie in
 // [-1, 1] however far the point is (cosh of the displacement in H3 overflows any integer grid
-// of absolute cells far out). Two points p, q within kSamePoint * size of each other differ
-// there by at most 2 kSamePoint / (1 - kSamePoint): |p/Sp - q/Sq| <= |p - q|/Sp +
-// |Sp - Sq|/Sp, and size_of is 1-Lipschitz in the max-norm.
+// of absolute cells far out). A point q within kSamePoint * Sp of the point p looked up (Sp, Sq
+// their sizes) differs there by less than 2 kSamePoint: p/Sp - q/Sq = (p - q)/Sp +
+// (q/Sq)(Sq - Sp)/Sp, |q/Sq| <= 1, and size_of is 1-Lipschitz in the max-norm.
 constexpr double kCell = 1e-5;                   // grid spacing, coarser than that reach
 constexpr double kReach = 2.5 * kSamePoint;      // that reach, with room for rounding
 
