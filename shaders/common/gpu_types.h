@@ -187,6 +187,8 @@ struct CellFace {
 
 // The most light samples next-event estimation takes at one vertex (render.light_samples).
 #define MAX_LIGHT_SAMPLES 8u
+// The most images one emitter keeps (render/prepare/emitters.h: kMaxImagesPerEmitter).
+#define MAX_EMITTER_IMAGES 64u
 
 // The per-render uniform block (std140).
 struct FrameUniforms {

@@ -87,6 +87,10 @@ layout(set = 0, binding = BINDING_LIGHT_IMAGES, std430)
 #if !defined(MAX_CROSSINGS)
 #define MAX_CROSSINGS frame.max_crossings
 #endif
+// The most images of any one emitter: the size of light sampling's array of image weights.
+#if !defined(EMITTER_IMAGES)
+#define EMITTER_IMAGES MAX_EMITTER_IMAGES
+#endif
 // A bound on walls between pieces crossed in one trace: a lune of L(p, 1) has p pieces around
 // one edge (scene/atlas_piece.h).
 #define MAX_WALL_CROSSINGS (1024u + 8u * MAX_CROSSINGS)

@@ -137,16 +137,19 @@ struct LightSample {
 uint chooseImages(Emitter e, vec4 x, vec4 ng, float u, uint count,
                   out uint images[MAX_LIGHT_SAMPLES], out uint branches[MAX_LIGHT_SAMPLES],
                   out float choices[MAX_LIGHT_SAMPLES]) {
+  // The weights are kept from the pass that sums them for the walk (2-4 % of the Poincare
+  // sphere's time, whose 60 images each walk nearly passes over; docs/benchmarks.md).
+  vec2 weightsOf[EMITTER_IMAGES];
   float total = 0.0;
   for (uint j = 0u; j < e.image_count; ++j) {
-    vec2 weights = imageWeights(e, x, lightImages[e.image_begin + j].center, ng);
-    total += weights.x + weights.y;
+    weightsOf[j] = imageWeights(e, x, lightImages[e.image_begin + j].center, ng);
+    total += weightsOf[j].x + weightsOf[j].y;
   }
   if (total <= 0.0) return 0u;
   uint k = 0u, image = 0u, branch = 0u;
   float running = 0.0, weight = 0.0;
   for (uint j = 0u; j < e.image_count && k < count; ++j) {
-    vec2 weights = imageWeights(e, x, lightImages[e.image_begin + j].center, ng);
+    vec2 weights = weightsOf[j];
     for (uint b = 0u; b < branchCount(); ++b) {
       if (weights[b] <= 0.0) continue;
       image = j;

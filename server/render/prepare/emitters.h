@@ -30,7 +30,7 @@ using GpuLightImage = gpu::LightImage;
 // maps it to itself), and the horospheres of one cusp, which are images of each other (the
 // ideal vertices of one class, scene/cusp_neighbourhoods.h), are one emitter: light sampling
 // must not offer one horoball twice.
-constexpr std::size_t kMaxImagesPerEmitter = 64;
+constexpr std::size_t kMaxImagesPerEmitter = MAX_EMITTER_IMAGES;
 
 struct EmitterTable {
   std::vector<GpuEmitter> emitters;

@@ -121,6 +121,9 @@ PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
                                              });
   f.point_light_count = f.paper ? uint32_t(packed.lights.size()) : 0;
   f.emitter_count = f.light_sampling ? uint32_t(packed.emitters.size()) : 0;
+  if (f.light_sampling)
+    for (const GpuEmitter& e : packed.emitters)
+      f.emitter_images = std::max(f.emitter_images, e.image_count);
   f.max_crossings = f.crossing == Crossing::None ? 0 : uint32_t(scene.manifold.max_crossings);
   f.internal_walls = std::any_of(packed.faces.begin(), packed.faces.end(),
                                  [](const GpuCellFace& face) { return face.internal != 0; });
@@ -185,6 +188,8 @@ std::vector<std::string> PipelineFeatures::defines() const {
   if (variant == PipelineVariant::Specialised) {
     d.push_back("POINT_LIGHT_COUNT=" + std::to_string(point_light_count) + "u");
     d.push_back("EMITTER_COUNT=" + std::to_string(emitter_count) + "u");
+    if (light_sampling)
+      d.push_back("EMITTER_IMAGES=" + std::to_string(std::max(emitter_images, 1u)) + "u");
     d.push_back("MAX_CROSSINGS=" + std::to_string(max_crossings) + "u");
   }
   return d;

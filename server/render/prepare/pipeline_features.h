@@ -86,6 +86,7 @@ struct PipelineFeatures {
   bool internal_walls = false;
   // Baked constants (specialised only): loop bounds the compiler can unroll or drop.
   uint32_t point_light_count = 0, emitter_count = 0, max_crossings = 0;
+  uint32_t emitter_images = 0;  // the most images of one emitter (light sampling's weights)
 
   // Spheres in the acceleration structure, as boxes: unless listed beside triangles (without
   // triangles nothing is traversed, and their boxes keep the structure from being empty).
