@@ -175,21 +175,10 @@ std::string row_structure_fault(std::string_view row, bool units) {
   return depth > 0 ? "a \"(\" is not closed" : "";
 }
 
-// The first entry in text outside every row (a number, or with `units` an imaginary unit
-// standing alone), with its line counted from `line`; empty when there is none.
-std::pair<std::string, int> stray_entry(std::string_view text, int line, bool units) {
-  if (const auto numbers = number_tokens(text); !numbers.empty())
-    return {std::string(numbers[0].first.substr(0, 40)), line + numbers[0].second - 1};
-  for (std::size_t k = 0; units && k < text.size(); ++k) {
-    if (text[k] == '\n') ++line;
-    if (!is_alpha(text[k]) || (k > 0 && (is_alpha(text[k - 1]) || is_digit(text[k - 1]))))
-      continue;
-    std::size_t end = k;
-    while (end < text.size() && (is_alpha(text[end]) || is_digit(text[end]))) ++end;
-    const std::string_view word = text.substr(k, end - k);
-    if (word == "I" || word == "i" || word == "j") return {std::string(word), line};
-  }
-  return {};
+// The entries in text, as written, with their lines: with `units`, Moebius text's entries
+// (numbers, imaginary units, "real + imaginary" pairs); otherwise its numbers.
+std::vector<std::pair<std::string_view, int>> entries_in(std::string_view text, bool units) {
+  return units ? moebius_entries(text) : number_tokens(text);
 }
 
 // Refuses anything inside a row (an innermost [...]) that is not part of an entry: a word
@@ -204,10 +193,11 @@ void check_rows(std::string_view text, const std::string& source, bool units,
   std::size_t open = std::string_view::npos, rows = 0, outside = 0;
   int line = 1, open_line = 1, outside_line = 1;
   const auto check_outside = [&](std::size_t end) {
-    const auto [entry, at] = stray_entry(text.substr(outside, end - outside), outside_line, units);
-    if (!entry.empty())
-      fail(source, rows / size, at,
-           "\"" + entry + "\" lies outside every row [...]: entries belong inside rows");
+    const auto stray = entries_in(text.substr(outside, end - outside), units);
+    if (!stray.empty())
+      fail(source, rows / size, outside_line + stray[0].second - 1,
+           "\"" + std::string(stray[0].first.substr(0, 40)) +
+               "\" lies outside every row [...]: entries belong inside rows");
   };
   for (std::size_t i = 0; i < text.size(); ++i) {
     if (i % 4096 == 4095) check_preparation_budget();
@@ -246,7 +236,7 @@ void check_rows(std::string_view text, const std::string& source, bool units,
     }
     if (const std::string fault = row_structure_fault(row, units); !fault.empty())
       fail(source, rows / size, open_line, fault + " inside " + shown);
-    const std::size_t entries = units ? moebius_row_entries(row) : number_tokens(row).size();
+    const std::size_t entries = entries_in(row, units).size();
     if (entries != size)
       fail(source, rows / size, open_line,
            "row " + std::to_string(rows % size + 1) + ", " + shown + ", has " +

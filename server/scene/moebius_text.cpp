@@ -22,6 +22,7 @@ struct Token {
   bool space_after_sign = false;
   int line = 0;
   std::string bad;  // a number that is not one, or not finite
+  std::size_t begin = 0, end = 0;  // a term's span in the text
 };
 
 class Scanner {
@@ -47,7 +48,7 @@ class Scanner {
         const std::string_view word = text_.substr(i_, j - i_);
         if (word == "conj") out.push_back({Token::Conj, {}, false, false, space, false, line_, {}});
         else if (word == "I" || word == "i" || word == "j")
-          out.push_back({Token::Term, Complex(0, 1), true, false, space, false, line_, {}});
+          out.push_back({Token::Term, Complex(0, 1), true, false, space, false, line_, {}, i_, j});
         i_ = j;
         space = false;
         continue;
@@ -104,10 +105,11 @@ class Scanner {
       imaginary = true;
       j = k + 1;
     }
+    const std::size_t begin = i_;
     i_ = j;
     const double x = sign * magnitude;
     return Token{Token::Term, imaginary ? Complex(0, x) : Complex(x, 0), imaginary, signed_term,
-                 space_before, gap, line_, bad};
+                 space_before, gap, line_, bad, begin, j};
   }
 
   std::string_view text_;
@@ -120,6 +122,7 @@ struct Entry {
   int line;
   bool conj;  // a `conj` came before it
   std::string bad;
+  std::size_t begin, end;  // its span in the text
 };
 
 // Joins "real <op> imaginary" into one entry: the sign written as an operator (spaces on
@@ -131,7 +134,7 @@ std::vector<Entry> entries(const std::vector<Token>& tokens) {
     const Token& t = tokens[i];
     if (t.kind == Token::Conj) conj = true;
     if (t.kind != Token::Term) continue;
-    Entry e{t.value, t.line, conj, t.bad};
+    Entry e{t.value, t.line, conj, t.bad, t.begin, t.end};
     conj = false;
     if (!t.imaginary && i + 1 < tokens.size()) {
       const Token& n = tokens[i + 1];
@@ -139,6 +142,7 @@ std::vector<Entry> entries(const std::vector<Token>& tokens) {
       if (n.kind == Token::Term && n.imaginary && operator_sign) {
         e.value += n.value;
         if (e.bad.empty()) e.bad = n.bad;
+        e.end = n.end;
         ++i;
       }
     }
@@ -164,7 +168,12 @@ bool looks_like_moebius(std::string_view text) {
   return false;
 }
 
-std::size_t moebius_row_entries(std::string_view row) { return entries(Scanner(row).tokens()).size(); }
+std::vector<std::pair<std::string_view, int>> moebius_entries(std::string_view text) {
+  std::vector<std::pair<std::string_view, int>> out;
+  for (const Entry& e : entries(Scanner(text).tokens()))
+    out.emplace_back(text.substr(e.begin, e.end - e.begin), e.line);
+  return out;
+}
 
 std::vector<MoebiusText> read_moebius(std::string_view text, const std::string& source) {
   const std::vector<Entry> all = entries(Scanner(text).tokens());

@@ -16,6 +16,7 @@
 
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "geometry/moebius.h"
@@ -31,8 +32,8 @@ struct MoebiusText {
 // Moebius text rather than SnapPy's O(3,1) rows of four.
 bool looks_like_moebius(std::string_view text);
 
-// The entries in one row's text (what lies inside its brackets).
-std::size_t moebius_row_entries(std::string_view row);
+// Every entry in the text, as written, with its line (1 for the text's first).
+std::vector<std::pair<std::string_view, int>> moebius_entries(std::string_view text);
 
 // Throws SceneError "<source>: matrix <i> (line <l>): <reason>" for an entry that is not a
 // number, a count that is not a multiple of 4, or a determinant of zero.

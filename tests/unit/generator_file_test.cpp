@@ -150,6 +150,10 @@ TEST(GeneratorFile, RefusesJunkInsideARowByName) {
             "inside rows");
   EXPECT_NE(error_of("[[1, 1], j [0, 1]]").find("\"j\" lies outside every row"),
             std::string::npos);
+  // A Moebius entry is named whole, as its reader would take it, on its own line.
+  EXPECT_NE(error_of("[[1, 1],\n\n 0.5 - 2*I [0, 1]]")
+                .find("matrix 1 (line 3): \"0.5 - 2*I\" lies outside every row"),
+            std::string::npos);
   EXPECT_NE(error_of("[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]], [0.5").find(
                 "matrix 2 (line 1): \"0.5\" lies outside every row"),
             std::string::npos);
