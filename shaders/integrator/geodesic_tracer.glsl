@@ -33,9 +33,24 @@ ChartLine chartLineOf(GeodesicRay ray) {
 }
 
 #if defined(CELL_CROSSING)
+// Face f, whose plane lies `height` above the line's start and which the line approaches at
+// rate `towards` per unit of chart parameter, as the exit found so far (face, at sExit) or not.
+void considerExit(uint f, float height, float towards, GeodesicRay ray, inout float sExit,
+                  inout uint face) {
+  if (f != ray.enteredFace && towards > 0.0) {
+    float s = max(0.0, height / towards);
+    if (s < sExit) {
+      sExit = s;
+      face = f;
+    }
+  }
+}
+
 // Where the chart line leaves its convex cell: the smallest chart parameter over the faces it
 // moves towards (NO_FACE and FAR for a cell without faces). With edge tubes, the same pass over
-// the faces notes which the line comes within the tubes' reach of (noteFaceReach).
+// the faces notes which the line comes within the tubes' reach of (noteFaceReach). With
+// OPPOSITE_FACES the faces come in pairs N . X = w, -N . X = w: one dot product with each of o
+// and d serves both, and the line moves towards one of them at most.
 uint exitFace(GeodesicRay ray, ChartLine line, out float sExit) {
   sExit = FAR;
   uint face = NO_FACE;
@@ -43,22 +58,33 @@ uint exitFace(GeodesicRay ray, ChartLine line, out float sExit) {
 #if defined(HAS_TUBES)
   clearFaceReach();
 #endif
+#if defined(OPPOSITE_FACES)
+  for (uint i = 0u; i < cell.face_count; i += 2u) {
+    uint f = cell.face_begin + i;
+    vec4 plane = cellFaces[f].plane;
+    float towards = dot(plane.xyz, line.d), across = dot(plane.xyz, line.o);
+    float height = plane.w - across, oppositeHeight = plane.w + across;
+    // Chosen by selects, not branches: SIMD lanes would run both branches' divisions.
+    bool forward = towards > 0.0;
+    considerExit(forward ? f : f + 1u, forward ? height : oppositeHeight, abs(towards), ray,
+                 sExit, face);
+#if defined(HAS_TUBES)
+    noteFaceReach(cell, i, height, towards, sExit);
+    noteFaceReach(cell, i + 1u, oppositeHeight, -towards, sExit);
+#endif
+  }
+#else
   for (uint i = 0u; i < cell.face_count; ++i) {
     uint f = cell.face_begin + i;
     vec4 plane = cellFaces[f].plane;
     float towards = dot(plane.xyz, line.d);
     float height = plane.w - dot(plane.xyz, line.o);  // above the face's plane, inside
-    if (f != ray.enteredFace && towards > 0.0) {
-      float s = max(0.0, height / towards);
-      if (s < sExit) {
-        sExit = s;
-        face = f;
-      }
-    }
+    considerExit(f, height, towards, ray, sExit, face);
 #if defined(HAS_TUBES)
     noteFaceReach(cell, i, height, towards, sExit);
 #endif
   }
+#endif
   return face;
 }
 

@@ -3,6 +3,7 @@
 // same image with its specialised pipeline as with the all-features one, and that the
 // pipeline cache makes a second renderer (or a second process) compile nothing.
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <cstring>
 #include <filesystem>
@@ -304,6 +305,33 @@ TEST(PipelineFeatures, PathsGoPastTheLastBounceOnlyForEmissionLightSamplingLeave
   const Scene horospheres = bundled("horospheres");
   const PipelineFeatures f = scene_features(horospheres, pack_scene(horospheres));
   EXPECT_TRUE(f.horosphere_emitters);
+}
+
+// Faces in opposite pairs (face 2k + 1 is face 2k's plane turned round, exactly) halve the
+// exit search: the dodecahedra and the boxes. The lens space's two faces and the cusped
+// spaces' ideal polyhedra are not so paired. (EveryBundledScene/SpecialisedPipelines.
+// RenderAsWithAllFeatures/* hold the images: the all-features pipeline searches face by face.)
+TEST(PipelineFeatures, FacesInOppositePairsAreSearchedAPairAtATime) {
+  const auto opposite = [](const Scene& scene) {
+    return feature(scene, &PipelineFeatures::opposite_faces, "OPPOSITE_FACES");
+  };
+  for (const char* name : {"mirrored-dodecahedron", "seifert-weber", "poincare-sphere",
+                           "torus-cornell", "quarter-turn-space"})
+    EXPECT_TRUE(opposite(bundled(name))) << name;
+  for (const char* name : {"catalogue/lens-7-3", "figure-eight-knot", "cornell-box"})
+    EXPECT_FALSE(opposite(bundled(name))) << name;
+  EXPECT_FALSE(all_features(GeometryKind::Spherical).opposite_faces);
+  // A pair that is not exactly opposite, by one float step of one offset or one normal
+  // component, is searched face by face.
+  const Scene box = bundled("torus-cornell");
+  const PackedScene packed = pack_scene(box);
+  ASSERT_TRUE(scene_features(box, packed).opposite_faces);
+  for (int component : {3, 0}) {
+    PackedScene moved = packed;
+    float& x = moved.faces[1].plane[component];
+    x = std::nextafter(x, 10.0f);
+    EXPECT_FALSE(scene_features(box, moved).opposite_faces) << component;
+  }
 }
 
 TEST(PipelineFeatures, BuffersOnlyForWhatTheSceneHas) {

@@ -52,6 +52,21 @@ Crossing crossing_of(GeometryKind k, const PackedScene& packed) {
   return Crossing::Isometry;
 }
 
+// Whether every cell's faces pair up as opposite planes, face 2k + 1 being face 2k's with its
+// normal negated, exactly (in float: the exit search then computes what it did face by face).
+bool faces_in_opposite_pairs(const PackedScene& packed) {
+  if (packed.faces.empty()) return false;
+  return std::all_of(packed.cells.begin(), packed.cells.end(), [&](const GpuCell& cell) {
+    if (cell.face_count % 2 != 0) return false;
+    for (uint32_t k = 0; k < cell.face_count; k += 2) {
+      const auto& a = packed.faces[cell.face_begin + k].plane;
+      const auto& b = packed.faces[cell.face_begin + k + 1].plane;
+      if (b[0] != -a[0] || b[1] != -a[1] || b[2] != -a[2] || b[3] != a[3]) return false;
+    }
+    return true;
+  });
+}
+
 bool any_emitter_of_kind(const PackedScene& packed, EmitterKind kind) {
   return std::any_of(packed.emitters.begin(), packed.emitters.end(),
                      [&](const GpuEmitter& e) { return e.kind == uint32_t(kind); });
@@ -127,6 +142,7 @@ PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
   f.max_crossings = f.crossing == Crossing::None ? 0 : uint32_t(scene.manifold.max_crossings);
   f.internal_walls = std::any_of(packed.faces.begin(), packed.faces.end(),
                                  [](const GpuCellFace& face) { return face.internal != 0; });
+  f.opposite_faces = faces_in_opposite_pairs(packed);
   return f;
 }
 
@@ -183,6 +199,7 @@ std::vector<std::string> PipelineFeatures::defines() const {
        "CULL_PRIMITIVES");
   flag(shared_cell_masks, "SHARED_CELL_MASKS");
   flag(internal_walls, "INTERNAL_WALLS");
+  flag(opposite_faces, "OPPOSITE_FACES");
   flag(reads_cells(), "READS_CELLS");
   flag(traced_boxes(), "TRACED_BOXES");
   if (variant == PipelineVariant::Specialised) {
@@ -249,6 +266,7 @@ std::string PipelineFeatures::summary() const {
   word(transmission, "refraction");
   word(shared_cell_masks, "shared-cell-masks");
   word(internal_walls, "internal-walls");
+  word(opposite_faces, "opposite-faces");
   return s;
 }
 
