@@ -308,8 +308,8 @@ TEST(PipelineFeatures, PathsGoPastTheLastBounceOnlyForEmissionLightSamplingLeave
 }
 
 // Faces in opposite pairs (face 2k + 1 is face 2k's plane turned round, exactly) halve the
-// exit search: the dodecahedra and the boxes. The lens space's two faces and the cusped
-// spaces' ideal polyhedra are not so paired. (EveryBundledScene/SpecialisedPipelines.
+// exit search: the dodecahedra and the boxes. The lens space's and the cusped spaces' faces
+// are not listed so. (EveryBundledScene/SpecialisedPipelines.
 // RenderAsWithAllFeatures/* hold the images: the all-features pipeline searches face by face.)
 TEST(PipelineFeatures, FacesInOppositePairsAreSearchedAPairAtATime) {
   const auto opposite = [](const Scene& scene) {

@@ -85,11 +85,11 @@ struct PipelineFeatures {
   // domain, so it does not count against MAX_CROSSINGS (MAX_WALL_CROSSINGS bounds them).
   bool internal_walls = false;
   // Every cell's faces come in opposite pairs, listed one after the other: face 2k + 1's plane
-  // is face 2k's with the normal negated (N . X = w and -N . X = w), as in the dodecahedra, the
-  // lens spaces and the boxes. A ray moves towards at most one face of a pair, and the pair's
+  // is face 2k's with the normal negated (N . X = w and -N . X = w), as in the dodecahedra and
+  // the boxes. A ray moves towards at most one face of a pair, and the pair's
   // two heights differ only in the sign of one dot product, so the search for the exit face
-  // (exitFace) reads half the planes and divides half as often (OPPOSITE_FACES; 5-8 % of a
-  // dodecahedral space's time on lavapipe, docs/benchmarks.md). Specialised pipelines only.
+  // (exitFace) reads half the planes and divides half as often (OPPOSITE_FACES; 4-10 % of those
+  // spaces' time on lavapipe, docs/benchmarks.md). Specialised pipelines only.
   bool opposite_faces = false;
   // Baked constants (specialised only): loop bounds the compiler can unroll or drop.
   uint32_t point_light_count = 0, emitter_count = 0, max_crossings = 0;
