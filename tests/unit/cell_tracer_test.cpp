@@ -1,6 +1,7 @@
 // The face-crossing twin of the shader, against an independent oracle (bisection on the domain
 // constraints) and over long runs: rays through faces, edges and vertices, and 10^3 crossings.
 #include <cmath>
+#include <cstring>
 #include <gtest/gtest.h>
 
 #include "twins/cell_tracer.h"
@@ -32,6 +33,13 @@ double off_model(GeometryKind k, const CellRay& r) {
   if (k == GeometryKind::Euclidean) return std::max({std::abs(r.p.w - 1), std::abs(r.v.w), v_unit});
   const double on_model = model::inner(k, r.p, r.p) - model::inner(k, model::origin(), model::origin());
   return std::max({std::abs(on_model), std::abs(model::inner(k, r.p, r.v)), v_unit});
+}
+
+bool same(const Vec3& a, const Vec3& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+// b = -a as float reads them.
+bool opposite_in_float(const Vec3& a, const Vec3& b) {
+  return float(b.x) == -float(a.x) && float(b.y) == -float(a.y) && float(b.z) == -float(a.z);
 }
 
 struct Space {
@@ -136,6 +144,46 @@ TEST(CellTracer, SphericalAtlasGoesAllTheWayAround) {
 
 // A lune's pieces all meet along one arc: a camera anywhere in the lune, on that arc or off it,
 // is placed in a piece that holds it (the walls between pieces are not crossings to be paid).
+// A domain whose faces come in opposite pairs (N . X = w, -N . X = w) but are listed apart, as
+// the Dirichlet domains of the Hantzsche-Wendt space and the binary octahedral space are, is
+// listed a pair at a time (the exit search's OPPOSITE_FACES), each face still entered from the
+// face its domain pairs it with, carried by the same isometry.
+TEST(CellTracer, OppositeFacesAreListedTogetherAndKeepTheirPartners) {
+  for (const char* name : {"hantzsche-wendt", "binary-octahedral", "3-torus"}) {
+    const CatalogueEntry* entry = find_catalogue_entry(name);
+    ASSERT_NE(entry, nullptr) << name;
+    const Manifold domain = dirichlet_domain(entry->kind, entry->generators).manifold;
+    const auto faces_of = [&](const Vec3& normal, double delta) {  // the domain's face there
+      for (size_t i = 0; i < domain.faces.size(); ++i)
+        if (same(domain.faces[i].normal, normal) && domain.faces[i].delta == delta) return int(i);
+      return -1;
+    };
+    bool apart = false;
+    for (size_t i = 0; i + 1 < domain.faces.size(); i += 2)
+      apart |= !opposite_in_float(domain.faces[i].normal, domain.faces[i + 1].normal);
+    EXPECT_TRUE(apart) << name << ": the case needs faces listed apart";
+    const auto cells = build_cells(scene_of(entry->kind, domain));
+    ASSERT_EQ(cells.size(), 1u);
+    const std::vector<CellFace>& faces = cells[0].faces;
+    ASSERT_EQ(faces.size(), domain.faces.size()) << name;
+    for (size_t k = 0; k < faces.size(); ++k) {
+      if (k % 2 == 1) {
+        EXPECT_TRUE(opposite_in_float(faces[k - 1].normal, faces[k].normal)) << name << " " << k;
+        EXPECT_EQ(float(faces[k].delta), float(faces[k - 1].delta)) << name << " face " << k;
+      }
+      const int was = faces_of(faces[k].normal, faces[k].delta);
+      ASSERT_GE(was, 0) << name << " face " << k;
+      const CellFace& partner = faces.at(size_t(faces[k].partner));
+      EXPECT_EQ(partner.partner, int(k)) << name << " face " << k;
+      const DomainFace& expected = domain.faces[size_t(domain.faces[size_t(was)].partner)];
+      EXPECT_TRUE(same(partner.normal, expected.normal)) << name << " face " << k;
+      EXPECT_EQ(partner.delta, expected.delta) << name << " face " << k;
+      EXPECT_EQ(std::memcmp(&faces[k].pairing, &domain.faces[size_t(was)].pairing, sizeof(Mat4)), 0)
+          << name << " face " << k;
+    }
+  }
+}
+
 TEST(CellTracer, CameraGoesToThePieceThatHoldsIt) {
   constexpr auto kS3 = GeometryKind::Spherical;
   const auto cells = build_cells(scene_of(kS3, dirichlet_domain(kS3, lens_space_generators(3, 1)).manifold));

@@ -74,6 +74,72 @@ std::vector<Cell> tesseract_atlas() {
   return cells;
 }
 
+// Whether face b's plane is face a's with its normal negated (N . X = w and -N . X = w), as
+// the GPU reads them: in float.
+bool opposite_in_float(const CellFace& a, const CellFace& b) {
+  return float(b.normal.x) == -float(a.normal.x) && float(b.normal.y) == -float(a.normal.y) &&
+         float(b.normal.z) == -float(a.normal.z) && float(b.delta) == float(a.delta);
+}
+
+// Each cell whose faces all come in opposite pairs lists each pair one after the other, so
+// that its exit search takes a pair at a time (OPPOSITE_FACES, pipeline_features.cpp); the
+// faces' partners are renumbered with them. A face has one opposite at most (two faces of a
+// convex cell do not share a plane), so the first unmatched one found is its pair.
+void list_opposite_faces_together(std::vector<Cell>& cells) {
+  std::vector<int> moved_to;  // global face index: where it is listed now
+  for (Cell& cell : cells) {
+    const size_t n = cell.faces.size();
+    std::vector<int> order;
+    std::vector<bool> taken(n, false);
+    for (size_t i = 0; i < n; ++i) {
+      if (taken[i]) continue;
+      for (size_t j = i + 1; j < n; ++j)
+        if (!taken[j] && opposite_in_float(cell.faces[i], cell.faces[j])) {
+          taken[i] = taken[j] = true;
+          order.insert(order.end(), {int(i), int(j)});
+          break;
+        }
+    }
+    moved_to.resize(size_t(cell.face_begin) + n);
+    for (size_t i = 0; i < n; ++i) moved_to[cell.face_begin + i] = cell.face_begin + int(i);
+    if (order.size() != n) continue;  // not every face has its opposite: left as it is
+    std::vector<CellFace> faces;
+    for (size_t k = 0; k < n; ++k) {
+      faces.push_back(cell.faces[order[k]]);
+      moved_to[cell.face_begin + order[k]] = cell.face_begin + int(k);
+    }
+    cell.faces = std::move(faces);
+  }
+  for (Cell& cell : cells)
+    for (CellFace& f : cell.faces)
+      if (f.partner >= 0) f.partner = moved_to[f.partner];
+}
+
+// The cells, and their faces in the order the scene gives them.
+std::vector<Cell> listed_cells(const Scene& scene) {
+  // A domain cut into pieces charted apart (scene/chart_atlas.h): one cell per piece.
+  if (!scene.manifold.pieces.empty()) {
+    std::vector<Cell> cells;
+    int face_begin = 0;
+    for (const DomainPiece& piece : scene.manifold.pieces) {
+      Cell cell{piece.chart_isometry, face_begin, {}};
+      for (const PieceFace& f : piece.faces)
+        cell.faces.push_back({f.normal, f.delta, f.pairing, f.target, f.partner, f.internal});
+      face_begin += static_cast<int>(cell.faces.size());
+      cells.push_back(std::move(cell));
+    }
+    return cells;
+  }
+  if (!scene.manifold.faces.empty()) {
+    Cell cell{Mat4::identity(), 0, {}};
+    for (const DomainFace& f : scene.manifold.faces)
+      cell.faces.push_back({f.normal, f.delta, f.pairing, 0, f.partner});
+    return {cell};
+  }
+  if (scene.geometry == GeometryKind::Spherical) return tesseract_atlas();
+  return {Cell{Mat4::identity(), 0, {}}};
+}
+
 }  // namespace
 
 CameraPlacement place_camera(GeometryKind k, const std::vector<Cell>& cells, const Mat4& pose) {
@@ -119,27 +185,9 @@ CameraPlacement place_camera(GeometryKind k, const std::vector<Cell>& cells, con
 }
 
 std::vector<Cell> build_cells(const Scene& scene) {
-  // A domain cut into pieces charted apart (scene/chart_atlas.h): one cell per piece.
-  if (!scene.manifold.pieces.empty()) {
-    std::vector<Cell> cells;
-    int face_begin = 0;
-    for (const DomainPiece& piece : scene.manifold.pieces) {
-      Cell cell{piece.chart_isometry, face_begin, {}};
-      for (const PieceFace& f : piece.faces)
-        cell.faces.push_back({f.normal, f.delta, f.pairing, f.target, f.partner, f.internal});
-      face_begin += static_cast<int>(cell.faces.size());
-      cells.push_back(std::move(cell));
-    }
-    return cells;
-  }
-  if (!scene.manifold.faces.empty()) {
-    Cell cell{Mat4::identity(), 0, {}};
-    for (const DomainFace& f : scene.manifold.faces)
-      cell.faces.push_back({f.normal, f.delta, f.pairing, 0, f.partner});
-    return {cell};
-  }
-  if (scene.geometry == GeometryKind::Spherical) return tesseract_atlas();
-  return {Cell{Mat4::identity(), 0, {}}};
+  std::vector<Cell> cells = listed_cells(scene);
+  list_opposite_faces_together(cells);
+  return cells;
 }
 
 }  // namespace geodesic

@@ -6,6 +6,10 @@
 //   S3 (no quotient)     eight cells, the cubes of the tesseract projected onto S3: each chart
 //                        is gnomonic about one of ±e_x, ±e_y, ±e_z, ±e_w and covers the cube
 //                        [-1, 1]^3; crossing a cube face changes chart, not the point.
+//
+// A cell whose faces all come in opposite pairs (N . X = w and -N . X = w, in float) lists each
+// pair one after the other, whatever order the domain gave them in: the exit search then takes
+// a pair at a time (OPPOSITE_FACES, render/prepare/pipeline_features.h).
 #pragma once
 
 #include <vector>

@@ -85,8 +85,9 @@ struct PipelineFeatures {
   // domain, so it does not count against MAX_CROSSINGS (MAX_WALL_CROSSINGS bounds them).
   bool internal_walls = false;
   // Every cell's faces come in opposite pairs, listed one after the other: face 2k + 1's plane
-  // is face 2k's with the normal negated (N . X = w and -N . X = w), as in the dodecahedra and
-  // the boxes. A ray moves towards at most one face of a pair, and the pair's
+  // is face 2k's with the normal negated (N . X = w and -N . X = w), as in the dodecahedra, the
+  // boxes and the flat and spherical spaces of the catalogue whose domains are symmetric about
+  // their centre (build_cells lists such faces together, render/prepare/cells.h). A ray moves towards at most one face of a pair, and the pair's
   // two heights differ only in the sign of one dot product, so the search for the exit face
   // (exitFace) reads half the planes and divides half as often (OPPOSITE_FACES; 4-10 % of those
   // spaces' time on lavapipe, docs/benchmarks.md). Specialised pipelines only.
