@@ -151,6 +151,42 @@ TEST(PipelineFeatures, SpacesOfOneCellReadItAtAUniformIndex) {
   EXPECT_FALSE(all_features(GeometryKind::Hyperbolic).single_cell);
 }
 
+// A quotient of one cell bakes its number of faces in (CELL_FACES), so that the exit search's
+// loop has constant bounds and face indices; neither a space without faces nor an atlas of
+// cells nor the all-features pipeline does. (EveryBundledScene/SpecialisedPipelines.
+// RenderAsWithAllFeatures/* hold the images: the all-features pipeline reads the cell's count.)
+TEST(PipelineFeatures, OneCellsFacesAreCountedAtCompileTime) {
+  const auto baked = [](const char* name) -> std::string {
+    const Scene scene = bundled(name);
+    const PackedScene packed = pack_scene(scene);
+    const PipelineFeatures f = scene_features(scene, packed);
+    const auto defines = f.defines();
+    const auto it = std::find_if(defines.begin(), defines.end(), [](const std::string& d) {
+      return d.rfind("CELL_FACES=", 0) == 0;
+    });
+    if (it == defines.end()) {
+      EXPECT_EQ(f.cell_faces, 0u) << name;
+      return "";
+    }
+    EXPECT_EQ(packed.cells.size(), 1u) << name;
+    EXPECT_EQ(*it, "CELL_FACES=" + std::to_string(packed.cells[0].face_count) + "u") << name;
+    return it->substr(std::strlen("CELL_FACES="));
+  };
+  EXPECT_EQ(baked("mirrored-dodecahedron"), "12u");
+  EXPECT_EQ(baked("seifert-weber"), "12u");
+  EXPECT_EQ(baked("torus-cornell"), "6u");
+  EXPECT_EQ(baked("whitehead-link"), "20u");
+  EXPECT_EQ(baked("catalogue/lens-7-3"), "6u");
+  EXPECT_EQ(baked("catalogue/coxeter-5-3-4"), "4u");
+  for (const char* name : {"cornell-box", "hyperbolic-spheres", "spherical-spheres",
+                           "catalogue/lens-3-1"})
+    EXPECT_EQ(baked(name), "") << name;
+  const auto all = all_features(GeometryKind::Hyperbolic).defines();
+  EXPECT_TRUE(std::none_of(all.begin(), all.end(), [](const std::string& d) {
+    return d.rfind("CELL_FACES", 0) == 0;
+  }));
+}
+
 // Segments test their cell's spheres one by one where each cell holds at most
 // kSphereListLength (and at most kShapeListLength shapes), in a space with faces or of one
 // cell; the acceleration structure traces the triangles beside them.

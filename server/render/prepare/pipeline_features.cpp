@@ -140,6 +140,7 @@ PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
     for (const GpuEmitter& e : packed.emitters)
       f.emitter_images = std::max(f.emitter_images, e.image_count);
   f.max_crossings = f.crossing == Crossing::None ? 0 : uint32_t(scene.manifold.max_crossings);
+  f.cell_faces = f.single_cell && f.crossing != Crossing::None ? packed.cells[0].face_count : 0;
   f.internal_walls = std::any_of(packed.faces.begin(), packed.faces.end(),
                                  [](const GpuCellFace& face) { return face.internal != 0; });
   f.opposite_faces = faces_in_opposite_pairs(packed);
@@ -208,6 +209,8 @@ std::vector<std::string> PipelineFeatures::defines() const {
     if (light_sampling)
       d.push_back("EMITTER_IMAGES=" + std::to_string(std::max(emitter_images, 1u)) + "u");
     d.push_back("MAX_CROSSINGS=" + std::to_string(max_crossings) + "u");
+    if (single_cell && cell_faces > 0)
+      d.push_back("CELL_FACES=" + std::to_string(cell_faces) + "u");
   }
   return d;
 }

@@ -94,6 +94,9 @@ struct PipelineFeatures {
   bool opposite_faces = false;
   // Baked constants (specialised only): loop bounds the compiler can unroll or drop.
   uint32_t point_light_count = 0, emitter_count = 0, max_crossings = 0;
+  // The faces of a space of one cell (CELL_FACES; 0 otherwise): with SINGLE_CELL the exit
+  // search's loop has constant bounds and face indices, which the compiler unrolls.
+  uint32_t cell_faces = 0;
   uint32_t emitter_images = 0;  // the most images of one emitter (light sampling's weights)
 
   // Spheres in the acceleration structure, as boxes: unless listed beside triangles (without
