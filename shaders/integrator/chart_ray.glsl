@@ -51,23 +51,31 @@ ChartHit noChartHit() { return ChartHit(HIT_NONE, 0u, FAR, FAR, vec2(0.0)); }
 // index the compiler sees is the same for all: one load for a SIMD group, not a gather.
 Cell cellRecord(uint cell) {
 #if defined(SINGLE_CELL)
-  return cells[0u];
+  Cell c = cells[0u];
+#if defined(CELL_RANGES)
+  // Its index ranges baked in (pipeline_features.h): the loops over its faces, tubes and
+  // listed primitives get constant bounds and indices, which the compiler unrolls.
+  const uint r[14] = uint[](CELL_RANGES);
+  c.face_begin = r[0];
+  c.face_count = r[1];
+  c.tube_begin = r[2];
+  c.tube_count = r[3];
+  c.always_begin = r[4];
+  c.sphere_begin = r[5];
+  c.sphere_count = r[6];
+  c.listed_begin = r[7];
+  c.listed_count = r[8];
+  c.listed_pairs = r[9];
+  c.shape_begin = r[10];
+  c.shape_count = r[11];
+  c.listed_hull_pairs = r[12];
+  c.listed_hull_lone = r[13];
+#endif
+  return c;
 #else
   return cells[cell];
 #endif
 }
-
-// The first of a cell's faces and their number. In a space of one cell whose face count is
-// baked in (CELL_FACES) both are constants: the compiler unrolls the exit search with every
-// face's index known, and each plane is one load for the SIMD group (on lavapipe 11-14 % of
-// the dodecahedral spaces' CPU seconds, docs/benchmarks.md).
-#if defined(SINGLE_CELL) && defined(CELL_FACES)
-uint cellFaceBegin(Cell c) { return 0u; }
-uint cellFaceCount(Cell c) { return CELL_FACES; }
-#else
-uint cellFaceBegin(Cell c) { return c.face_begin; }
-uint cellFaceCount(Cell c) { return c.face_count; }
-#endif
 #endif
 
 // Whether the chart segment o + s d, 0 <= s <= sMax, meets the box [lo, hi] (a slab test).

@@ -59,8 +59,8 @@ uint exitFace(GeodesicRay ray, ChartLine line, out float sExit) {
   clearFaceReach();
 #endif
 #if defined(OPPOSITE_FACES)
-  for (uint i = 0u; i < cellFaceCount(cell); i += 2u) {
-    uint f = cellFaceBegin(cell) + i;
+  for (uint i = 0u; i < cell.face_count; i += 2u) {
+    uint f = cell.face_begin + i;
     vec4 plane = cellFaces[f].plane;
     float towards = dot(plane.xyz, line.d), across = dot(plane.xyz, line.o);
     float height = plane.w - across, oppositeHeight = plane.w + across;
@@ -74,8 +74,8 @@ uint exitFace(GeodesicRay ray, ChartLine line, out float sExit) {
 #endif
   }
 #else
-  for (uint i = 0u; i < cellFaceCount(cell); ++i) {
-    uint f = cellFaceBegin(cell) + i;
+  for (uint i = 0u; i < cell.face_count; ++i) {
+    uint f = cell.face_begin + i;
     vec4 plane = cellFaces[f].plane;
     float towards = dot(plane.xyz, line.d);
     float height = plane.w - dot(plane.xyz, line.o);  // above the face's plane, inside

@@ -34,7 +34,7 @@ uint nearFaces(Cell c, vec3 o, vec3 d, float sMax) {
   uint near = nearAtStart;
   for (uint pending = nearAhead; pending != 0u; pending &= pending - 1u) {
     uint i = uint(findLSB(pending));
-    vec4 plane = cellFaces[cellFaceBegin(c) + i].plane;
+    vec4 plane = cellFaces[c.face_begin + i].plane;
     float beyond = plane.w - dot(plane.xyz, o) - c.tube_reach;
     if (beyond <= sMax * dot(plane.xyz, d)) near |= 1u << i;
   }
@@ -58,7 +58,7 @@ ChartHit nearestTube(uint cell, vec3 o, vec3 d, float sMax, bool anyHit) {
   if (c.tube_count == 0u) return hit;
   uint near = nearFaces(c, o, d, sMax);
   for (uint pending = near; pending != 0u; pending &= pending - 1u) {
-    CellFace face = cellFaces[cellFaceBegin(c) + uint(findLSB(pending))];
+    CellFace face = cellFaces[c.face_begin + uint(findLSB(pending))];
     for (uint pairs = face.tube_partners & near; pairs != 0u; pairs &= pairs - 1u) {
       uint below = (1u << uint(findLSB(pairs))) - 1u;
       testTube(c.tube_begin + face.tubes + uint(bitCount(face.tube_partners & below)), o, d,

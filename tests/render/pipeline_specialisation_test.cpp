@@ -151,39 +151,40 @@ TEST(PipelineFeatures, SpacesOfOneCellReadItAtAUniformIndex) {
   EXPECT_FALSE(all_features(GeometryKind::Hyperbolic).single_cell);
 }
 
-// A quotient of one cell bakes its number of faces in (CELL_FACES), so that the exit search's
-// loop has constant bounds and face indices; neither a space without faces nor an atlas of
-// cells nor the all-features pipeline does. (EveryBundledScene/SpecialisedPipelines.
-// RenderAsWithAllFeatures/* hold the images: the all-features pipeline reads the cell's count.)
-TEST(PipelineFeatures, OneCellsFacesAreCountedAtCompileTime) {
+// A space of one cell bakes its record's index ranges in (CELL_RANGES, in cellRecord's order),
+// so that the loops over its faces, tubes and listed primitives have constant bounds; neither
+// an atlas of cells nor the all-features pipeline does. (EveryBundledScene/
+// SpecialisedPipelines.RenderAsWithAllFeatures/* hold the images: the all-features pipeline
+// reads the record's ranges.)
+TEST(PipelineFeatures, OneCellsRangesAreBakedIn) {
   const auto baked = [](const char* name) -> std::string {
     const Scene scene = bundled(name);
     const PackedScene packed = pack_scene(scene);
-    const PipelineFeatures f = scene_features(scene, packed);
-    const auto defines = f.defines();
+    const auto defines = scene_features(scene, packed).defines();
     const auto it = std::find_if(defines.begin(), defines.end(), [](const std::string& d) {
-      return d.rfind("CELL_FACES=", 0) == 0;
+      return d.rfind("CELL_RANGES=", 0) == 0;
     });
-    if (it == defines.end()) {
-      EXPECT_EQ(f.cell_faces, 0u) << name;
-      return "";
-    }
+    if (it == defines.end()) return "";
     EXPECT_EQ(packed.cells.size(), 1u) << name;
-    EXPECT_EQ(*it, "CELL_FACES=" + std::to_string(packed.cells[0].face_count) + "u") << name;
-    return it->substr(std::strlen("CELL_FACES="));
+    return it->substr(std::strlen("CELL_RANGES="));
   };
-  EXPECT_EQ(baked("mirrored-dodecahedron"), "12u");
-  EXPECT_EQ(baked("seifert-weber"), "12u");
-  EXPECT_EQ(baked("torus-cornell"), "6u");
-  EXPECT_EQ(baked("whitehead-link"), "20u");
-  EXPECT_EQ(baked("catalogue/lens-7-3"), "6u");
-  EXPECT_EQ(baked("catalogue/coxeter-5-3-4"), "4u");
-  for (const char* name : {"cornell-box", "hyperbolic-spheres", "spherical-spheres",
-                           "catalogue/lens-3-1"})
+  // face begin, count; tube begin, count, always-tested begin; sphere begin, count; listed
+  // begin, count, pairs; shape begin, count; hull pairs, hull lone triangles.
+  EXPECT_EQ(baked("mirrored-dodecahedron"), "0u,12u,0u,30u,30u,0u,3u,0u,0u,0u,0u,0u,0u,0u");
+  EXPECT_EQ(baked("catalogue/coxeter-5-3-4"), "0u,4u,0u,6u,6u,0u,3u,0u,0u,0u,0u,0u,0u,0u");
+  // The Cornell box: no faces, its triangles listed (16, as 8 parallelograms), its spheres.
+  const Scene box = bundled("cornell-box");
+  const PackedScene packed = pack_scene(box);
+  const GpuCell& cell = packed.cells.at(0);
+  EXPECT_EQ(baked("cornell-box"),
+            "0u,0u,0u,0u,0u,0u," + std::to_string(cell.sphere_count) + "u,0u,8u,8u,0u,0u," +
+                std::to_string(cell.listed_hull_pairs) + "u," +
+                std::to_string(cell.listed_hull_lone) + "u");
+  for (const char* name : {"spherical-spheres", "catalogue/lens-3-1"})
     EXPECT_EQ(baked(name), "") << name;
   const auto all = all_features(GeometryKind::Hyperbolic).defines();
   EXPECT_TRUE(std::none_of(all.begin(), all.end(), [](const std::string& d) {
-    return d.rfind("CELL_FACES", 0) == 0;
+    return d.rfind("CELL_RANGES", 0) == 0;
   }));
 }
 

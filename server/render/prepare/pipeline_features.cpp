@@ -67,6 +67,18 @@ bool faces_in_opposite_pairs(const PackedScene& packed) {
   });
 }
 
+// The cell record's ranges in cellRecord's order (integrator/chart_ray.glsl).
+std::string cell_ranges_define(const GpuCell& c) {
+  std::string d = "CELL_RANGES=";
+  for (uint32_t v : {c.face_begin, c.face_count, c.tube_begin, c.tube_count, c.always_begin,
+                     c.sphere_begin, c.sphere_count, c.listed_begin, c.listed_count,
+                     c.listed_pairs, c.shape_begin, c.shape_count, c.listed_hull_pairs,
+                     c.listed_hull_lone})
+    d += std::to_string(v) + "u,";
+  d.pop_back();
+  return d;
+}
+
 bool any_emitter_of_kind(const PackedScene& packed, EmitterKind kind) {
   return std::any_of(packed.emitters.begin(), packed.emitters.end(),
                      [&](const GpuEmitter& e) { return e.kind == uint32_t(kind); });
@@ -140,7 +152,7 @@ PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
     for (const GpuEmitter& e : packed.emitters)
       f.emitter_images = std::max(f.emitter_images, e.image_count);
   f.max_crossings = f.crossing == Crossing::None ? 0 : uint32_t(scene.manifold.max_crossings);
-  f.cell_faces = f.single_cell && f.crossing != Crossing::None ? packed.cells[0].face_count : 0;
+  if (f.single_cell) f.cell_ranges = packed.cells[0];
   f.internal_walls = std::any_of(packed.faces.begin(), packed.faces.end(),
                                  [](const GpuCellFace& face) { return face.internal != 0; });
   f.opposite_faces = faces_in_opposite_pairs(packed);
@@ -209,8 +221,7 @@ std::vector<std::string> PipelineFeatures::defines() const {
     if (light_sampling)
       d.push_back("EMITTER_IMAGES=" + std::to_string(std::max(emitter_images, 1u)) + "u");
     d.push_back("MAX_CROSSINGS=" + std::to_string(max_crossings) + "u");
-    if (single_cell && cell_faces > 0)
-      d.push_back("CELL_FACES=" + std::to_string(cell_faces) + "u");
+    if (single_cell && cell_ranges) d.push_back(cell_ranges_define(*cell_ranges));
   }
   return d;
 }

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -94,9 +95,12 @@ struct PipelineFeatures {
   bool opposite_faces = false;
   // Baked constants (specialised only): loop bounds the compiler can unroll or drop.
   uint32_t point_light_count = 0, emitter_count = 0, max_crossings = 0;
-  // The faces of a space of one cell (CELL_FACES; 0 otherwise): with SINGLE_CELL the exit
-  // search's loop has constant bounds and face indices, which the compiler unrolls.
-  uint32_t cell_faces = 0;
+  // A space of one cell's record (SINGLE_CELL, specialised only): the index ranges in it (its
+  // faces, tubes, listed spheres, shapes and triangles) baked in as constants (CELL_RANGES,
+  // cellRecord in integrator/chart_ray.glsl), so that the loops over them have constant
+  // bounds and indices, which the compiler unrolls, loading each plane or sphere once for the
+  // SIMD group (on lavapipe 10-20 % of the one-cell quotients' CPU seconds, docs/benchmarks.md).
+  std::optional<GpuCell> cell_ranges;
   uint32_t emitter_images = 0;  // the most images of one emitter (light sampling's weights)
 
   // Spheres in the acceleration structure, as boxes: unless listed beside triangles (without
