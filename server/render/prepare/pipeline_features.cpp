@@ -221,7 +221,7 @@ std::vector<std::string> PipelineFeatures::defines() const {
     if (light_sampling)
       d.push_back("EMITTER_IMAGES=" + std::to_string(std::max(emitter_images, 1u)) + "u");
     d.push_back("MAX_CROSSINGS=" + std::to_string(max_crossings) + "u");
-    if (single_cell && cell_ranges) d.push_back(cell_ranges_define(*cell_ranges));
+    if (cell_ranges) d.push_back(cell_ranges_define(*cell_ranges));
   }
   return d;
 }

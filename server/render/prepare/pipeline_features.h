@@ -88,20 +88,21 @@ struct PipelineFeatures {
   // Every cell's faces come in opposite pairs, listed one after the other: face 2k + 1's plane
   // is face 2k's with the normal negated (N . X = w and -N . X = w), as in the dodecahedra, the
   // boxes and the flat and spherical spaces of the catalogue whose domains are symmetric about
-  // their centre (build_cells lists such faces together, render/prepare/cells.h). A ray moves towards at most one face of a pair, and the pair's
-  // two heights differ only in the sign of one dot product, so the search for the exit face
-  // (exitFace) reads half the planes and divides half as often (OPPOSITE_FACES; 4-10 % of those
-  // spaces' time on lavapipe, docs/benchmarks.md). Specialised pipelines only.
+  // their centre (build_cells lists such faces together, render/prepare/cells.h). A ray moves
+  // towards at most one face of a pair, and the pair's two heights differ only in the sign of
+  // one dot product, so the search for the exit face (exitFace) reads half the planes and
+  // divides half as often (OPPOSITE_FACES; 4-10 % of those spaces' time on lavapipe,
+  // docs/benchmarks.md). Specialised pipelines only.
   bool opposite_faces = false;
   // Baked constants (specialised only): loop bounds the compiler can unroll or drop.
   uint32_t point_light_count = 0, emitter_count = 0, max_crossings = 0;
-  // A space of one cell's record (SINGLE_CELL, specialised only): the index ranges in it (its
+  uint32_t emitter_images = 0;  // the most images of one emitter (light sampling's weights)
+  // A space of one cell's record (set with SINGLE_CELL): the index ranges in it (its
   // faces, tubes, listed spheres, shapes and triangles) baked in as constants (CELL_RANGES,
   // cellRecord in integrator/chart_ray.glsl), so that the loops over them have constant
   // bounds and indices, which the compiler unrolls, loading each plane or sphere once for the
-  // SIMD group (on lavapipe 10-20 % of the one-cell quotients' CPU seconds, docs/benchmarks.md).
+  // SIMD group (on lavapipe 13-20 % of the one-cell quotients' CPU seconds, docs/benchmarks.md).
   std::optional<GpuCell> cell_ranges;
-  uint32_t emitter_images = 0;  // the most images of one emitter (light sampling's weights)
 
   // Spheres in the acceleration structure, as boxes: unless listed beside triangles (without
   // triangles nothing is traversed, and their boxes keep the structure from being empty).
