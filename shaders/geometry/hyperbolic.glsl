@@ -12,9 +12,11 @@ float modelInner(vec4 a, vec4 b) { return dot(a.xyz, b.xyz) - a.w * b.w; }
 // (sinh from e^x - e^-x keeps 3 digits at 1e-4): Taylor series there, the built-ins beyond.
 float sinhStable(float x) {
   float x2 = x * x;
-  return abs(x) < 0.5
-             ? x * (1.0 + x2 / 6.0 * (1.0 + x2 / 20.0 * (1.0 + x2 / 42.0 * (1.0 + x2 / 72.0))))
-             : sinh(x);
+  // Coefficients folded at compile time: SIMD lanes run both sides of the select, and x2 / 6,
+  // x2 / 20, ... were four divisions on every call (4-7 % of an H3 quotient's time).
+  float series =
+      1.0 + x2 * (1.0 / 6.0 + x2 * (1.0 / 120.0 + x2 * (1.0 / 5040.0 + x2 * (1.0 / 362880.0))));
+  return abs(x) < 0.5 ? x * series : sinh(x);
 }
 float tanhStable(float x) { return abs(x) < 0.5 ? sinhStable(x) / cosh(x) : tanh(x); }
 float asinhStable(float x) {
@@ -25,8 +27,8 @@ float asinhStable(float x) {
 }
 float atanhStable(float x) {
   float x2 = x * x;
-  float series =
-      1.0 + x2 * (1.0 / 3.0 + x2 * (1.0 / 5.0 + x2 * (1.0 / 7.0 + x2 * (1.0 / 9.0 + x2 / 11.0))));
+  float series = 1.0 + x2 * (1.0 / 3.0 + x2 * (1.0 / 5.0 + x2 * (1.0 / 7.0 + x2 * (1.0 / 9.0 +
+                                                                             x2 * (1.0 / 11.0)))));
   return abs(x) < 0.25 ? x * series : atanh(x);
 }
 
