@@ -10,15 +10,22 @@ float modelInner(vec4 a, vec4 b) { return dot(a.xyz, b.xyz) - a.w * b.w; }
 
 // sinh, tanh, asinh and atanh to a few ulps near 0, where the driver's exp/log forms cancel
 // (sinh from e^x - e^-x keeps 3 digits at 1e-4): Taylor series there, the built-ins beyond.
-float sinhStable(float x) {
+float sinhSeries(float x) {  // |x| < 0.5
   float x2 = x * x;
   // Coefficients folded at compile time: SIMD lanes run both sides of the select, and x2 / 6,
   // x2 / 20, ... were four divisions on every call (3-8 % of an H3 quotient's time).
-  float series =
-      1.0 + x2 * (1.0 / 6.0 + x2 * (1.0 / 120.0 + x2 * (1.0 / 5040.0 + x2 * (1.0 / 362880.0))));
-  return abs(x) < 0.5 ? x * series : sinh(x);
+  return x *
+         (1.0 + x2 * (1.0 / 6.0 + x2 * (1.0 / 120.0 + x2 * (1.0 / 5040.0 + x2 * (1.0 / 362880.0)))));
 }
-float tanhStable(float x) { return abs(x) < 0.5 ? sinhStable(x) / cosh(x) : tanh(x); }
+float sinhStable(float x) { return abs(x) < 0.5 ? sinhSeries(x) : sinh(x); }
+// One exp, e = e^-2|x| (which cannot overflow), for tanh |x| = (1 - e) / (1 + e) beyond 0.5,
+// and none below, sinh / cosh = sinh / sqrt(1 + sinh^2) from the series: the built-ins'
+// sinh, cosh and tanh that both sides paid were four.
+float tanhStable(float x) {
+  float small = sinhSeries(x), e = exp(-2.0 * abs(x));
+  float large = (1.0 - e) / (1.0 + e);
+  return abs(x) < 0.5 ? small / sqrt(1.0 + small * small) : (x < 0.0 ? -large : large);
+}
 float asinhStable(float x) {
   float x2 = x * x;
   float series =
