@@ -120,4 +120,16 @@ void boxRay(vec3 o, vec3 d, float sMin, float sMax, out vec4 p, out vec4 v, out 
   range = vec2(sMin / k, sMax >= FAR ? FAR : sMax / k);
 }
 
+// The arc length bound a primitive test that returns its first crossing of (p, v) needs for
+// the chart segment s in [0, sMax]. In E3 and H3 the chart parameter increases with t, so the
+// caller's s <= sMax bounds t as well: none (FAR), without an atanh per primitive and segment.
+// S3's gnomonic chart parameter is periodic in t: only t up to sMax's arc length maps into it.
+float firstCrossingBound(vec4 p, vec4 v, float sMax) {
+#if defined(GEOMETRY_SPHERICAL)
+  return sMax >= FAR ? FAR : distanceFromChartParameter(p, v, sMax);
+#else
+  return FAR;
+#endif
+}
+
 #endif

@@ -22,15 +22,8 @@ bool shapeCandidate(ShapeRef ref, vec4 p, vec4 v, float sMin, float sMax, out fl
                     out float t) {
   Shape shape = shapes[ref.shape];
   mat4 P = cellChartIsometry(ref.cell);
-#if defined(GEOMETRY_SPHERICAL)
-  // The gnomonic chart parameter is periodic in t: only t <= tMax maps into [sMin, sMax].
-  float tMax = sMax >= FAR ? FAR : distanceFromChartParameter(p, v, sMax);
-#else
-  // In E3 and H3 the chart parameter increases with t and a shape's first crossing is the
-  // one returned, so the s <= sMax below bounds t as well (as for spheres).
-  float tMax = FAR;
-#endif
-  t = intersectShape(shape.kind, P * shape.a, P * shape.b, shape.size, p, v, 0.0, tMax);
+  t = intersectShape(shape.kind, P * shape.a, P * shape.b, shape.size, p, v, 0.0,
+                     firstCrossingBound(p, v, sMax));
   if (t >= FAR) return false;
   s = chartParameter(p, v, t);
   return s >= sMin && s <= sMax;

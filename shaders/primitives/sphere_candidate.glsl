@@ -10,15 +10,7 @@ bool sphereCandidate(SphereRef ref, vec4 p, vec4 v, float sMin, float sMax, out 
                      out float t) {
   Sphere sphere = spheres[ref.sphere];
   vec4 center = cellChartIsometry(ref.cell) * sphere.center;
-#if defined(GEOMETRY_SPHERICAL)
-  // The gnomonic chart parameter is periodic in t: only t <= tMax maps into [sMin, sMax].
-  float tMax = sMax >= FAR ? FAR : distanceFromChartParameter(p, v, sMax);
-#else
-  // In E3 and H3 the chart parameter increases with t, so the s <= sMax below bounds t as
-  // well: no arc length of sMax (an atanh per sphere and segment) to compute.
-  float tMax = FAR;
-#endif
-  t = intersectGeodesicSphere(p, v, center, sphere.radius, 0.0, tMax);
+  t = intersectGeodesicSphere(p, v, center, sphere.radius, 0.0, firstCrossingBound(p, v, sMax));
   if (t <= 0.0) return false;
   s = chartParameter(p, v, t);
   return s >= sMin && s <= sMax;
