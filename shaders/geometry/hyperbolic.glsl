@@ -9,7 +9,8 @@ const float GEOMETRY_CURVATURE = -1.0;
 float modelInner(vec4 a, vec4 b) { return dot(a.xyz, b.xyz) - a.w * b.w; }
 
 // sinh, tanh, asinh and atanh to a few ulps near 0, where the driver's exp/log forms cancel
-// (sinh from e^x - e^-x keeps 3 digits at 1e-4): Taylor series there, the built-ins beyond.
+// (sinh from e^x - e^-x keeps 3 digits at 1e-4): Taylor series there, the built-ins (tanh:
+// one exp) beyond.
 float sinhSeries(float x) {  // |x| < 0.5
   float x2 = x * x;
   // Coefficients folded at compile time: SIMD lanes run both sides of the select, and x2 / 6,
@@ -18,9 +19,9 @@ float sinhSeries(float x) {  // |x| < 0.5
          (1.0 + x2 * (1.0 / 6.0 + x2 * (1.0 / 120.0 + x2 * (1.0 / 5040.0 + x2 * (1.0 / 362880.0)))));
 }
 float sinhStable(float x) { return abs(x) < 0.5 ? sinhSeries(x) : sinh(x); }
-// One exp, e = e^-2|x| (which cannot overflow), for tanh |x| = (1 - e) / (1 + e) beyond 0.5,
-// and none below, sinh / cosh = sinh / sqrt(1 + sinh^2) from the series: the built-ins'
-// sinh, cosh and tanh that both sides paid were four.
+// tanh |x| = (1 - e) / (1 + e) from e = e^-2|x| (which cannot overflow) beyond 0.5, and
+// sinh / cosh = sinh / sqrt(1 + sinh^2) from the series below: one exp where the built-ins'
+// sinh, cosh and tanh took four, and closer to the double twin (docs/benchmarks.md; no faster).
 float tanhStable(float x) {
   float small = sinhSeries(x), e = exp(-2.0 * abs(x));
   float large = (1.0 - e) / (1.0 + e);
