@@ -78,6 +78,11 @@ class WsClient {
   nlohmann::json read_json(std::chrono::milliseconds timeout = 30s);  // a text message
   // Skips other messages (frames with their JPEGs) up to the next message of `type`.
   nlohmann::json read_until(const std::string& type, std::chrono::milliseconds timeout = 30s);
+  // The next "scene" message: a scene's preparation (domain, renderer, pipeline) runs on a
+  // worker at nice 10 (net/preparation_pool.cpp), which other tests' renders under ctest -j2
+  // leave a small share of the two cores. Opening torus-lamps took 0.9 s alone and 19 s
+  // beside four busy threads, so this waits longer than read_until's default.
+  nlohmann::json read_scene() { return read_until("scene", std::chrono::minutes(2)); }
   Frame read_frame(std::chrono::milliseconds timeout = 30s);
   // The next frame that `accept` takes within 60 s, skipping others (earlier sizes, frames
   // already queued); throws when none comes.

@@ -32,7 +32,7 @@ TEST(ExposureSession, ANewExposureReencodesTheAccumulationAndItsJpegFollowsTwoTo
   Daemon daemon;
   WsClient client(daemon.port());
   client.read_until("hello");
-  const json scene = client.read_until("scene");
+  const json scene = client.read_scene();
   EXPECT_EQ(scene["exposure"], 0.0);
   client.send({{"type", "settings"}, {"width", 64}, {"height", 48}});
   const auto plain = client.read_frame_where([](const json& f) {

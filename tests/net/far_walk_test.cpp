@@ -24,7 +24,7 @@ TEST(FarWalk, AWalkNineUnitsOutInH3KeepsItsFramesAndItsPose) {
   Daemon daemon;
   WsClient client(daemon.port());
   client.read_until("hello");
-  client.read_until("scene");
+  client.read_scene();
   // Spheres every 3 units along the walk, 0.8 to its side, so there is something beside the
   // camera all along (exponential coordinates of points beside a geodesic fan out: computed).
   // Radius 0.6: the one 3 units ahead spans 3 pixels of the 24 rows, so its centre pixel is
@@ -43,7 +43,7 @@ TEST(FarWalk, AWalkNineUnitsOutInH3KeepsItsFramesAndItsPose) {
                  {"camera", {{"position", {0, 0, 0}}, {"look_at", {0, 0, -1}}}},
                  {"materials", {{"m", {{"diffuse", 0.5}, {"emission", 0.5}}}}},
                  {"objects", objects}}}});
-  client.read_until("scene", std::chrono::seconds(60));
+  client.read_scene();
   client.send({{"type", "settings"}, {"width", 32}, {"height", 24}});
   for (int step = 0; step < 6; ++step) client.send({{"type", "move"}, {"forward", 1.5}});
   // The camera is 9 units along -z from the origin: its pose's w row ends in cosh 9.

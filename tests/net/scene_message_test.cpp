@@ -25,7 +25,7 @@ TEST(SceneMessages, HelloCarriesTheServersMaxDepthAndSettingsAreBoundByIt) {
   const json hello = client.read_until("hello");
   EXPECT_EQ(hello["limits"]["max_depth"], 7);
 
-  const json first = client.read_until("scene");
+  const json first = client.read_scene();
   EXPECT_EQ(first["name"], "cornell-box");
   EXPECT_EQ(first["source"], "bundled");
   EXPECT_TRUE(first["title"].get<std::string>().starts_with("Cornell box")) << first["title"];
@@ -51,11 +51,11 @@ TEST(SceneMessages, HelloCarriesTheServersMaxDepthAndSettingsAreBoundByIt) {
 TEST(SceneMessages, EachSourceSaysWhatItIs) {
   Daemon daemon;
   WsClient client(daemon.port());
-  client.read_until("scene");
+  client.read_scene();
   client.send({{"type", "settings"}, {"width", 64}, {"height", 48}});
 
   client.send({{"type", "open"}, {"scene", "torus-cornell"}});
-  const json bundled = client.read_until("scene");
+  const json bundled = client.read_scene();
   EXPECT_EQ(bundled["name"], "torus-cornell");
   EXPECT_EQ(bundled["source"], "bundled");
   EXPECT_TRUE(bundled["title"].get<std::string>().starts_with("Cornell box in the 3-torus"))
@@ -65,7 +65,7 @@ TEST(SceneMessages, EachSourceSaysWhatItIs) {
   std::ostringstream text;
   text << in.rdbuf();
   client.send({{"type", "open"}, {"generators", text.str()}});
-  const json space = client.read_until("scene");
+  const json space = client.read_scene();
   EXPECT_EQ(space["name"], "Lens space L(7,2)");
   EXPECT_EQ(space["source"], "generators");
   EXPECT_EQ(space["title"], "Lens space L(7,2)");
@@ -76,12 +76,12 @@ TEST(SceneMessages, EachSourceSaysWhatItIs) {
   json named = sphere;
   named["name"] = "cornell-box";
   client.send({{"type", "open"}, {"document", named}});
-  const json impostor = client.read_until("scene");
+  const json impostor = client.read_scene();
   EXPECT_EQ(impostor["name"], "cornell-box");
   EXPECT_EQ(impostor["source"], "document");
 
   client.send({{"type", "open"}, {"document", sphere}});
-  const json unnamed = client.read_until("scene");
+  const json unnamed = client.read_scene();
   EXPECT_EQ(unnamed["name"], "document");
   EXPECT_EQ(unnamed["source"], "document");
   EXPECT_EQ(unnamed["title"], "document");

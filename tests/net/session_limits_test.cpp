@@ -24,7 +24,7 @@ bool finite_camera(const json& frame) {
 TEST(SessionLimits, HugeMovesAreRefusedAndThePoseStaysFinite) {
   Daemon daemon;
   WsClient client(daemon.port());
-  client.read_until("scene");
+  client.read_scene();
   client.send({{"type", "settings"}, {"width", 64}, {"height", 48}});
   for (const auto& [field, value] : {std::pair{"forward", 1e308}, {"yaw", 1e308}, {"up", -11.0},
                                      {"roll", 361.0}}) {

@@ -122,9 +122,9 @@ TEST(WebSocket, UnknownSceneIsAnErrorNamingScene) {
   EXPECT_NE(error["message"].get<std::string>().find("no-such-scene"), std::string::npos);
 
   client.send({{"type", "open"}, {"scene", "spherical-spheres"}});
-  const json scene = client.read_until("scene");
+  const json scene = client.read_scene();
   json next = scene;
-  if (scene["name"] == "cornell-box") next = client.read_until("scene");  // the default's first
+  if (scene["name"] == "cornell-box") next = client.read_scene();  // the default's first
   EXPECT_EQ(next["name"], "spherical-spheres");
   EXPECT_EQ(next["geometry"], "spherical");
 }
@@ -138,8 +138,8 @@ TEST(WebSocket, GeneratorTextOpensTheSpaceItDescribes) {
   std::ostringstream text;
   text << in.rdbuf();
   client.send({{"type", "open"}, {"generators", text.str()}});
-  json scene = client.read_until("scene");
-  if (scene["name"] == "cornell-box") scene = client.read_until("scene");  // the default's first
+  json scene = client.read_scene();
+  if (scene["name"] == "cornell-box") scene = client.read_scene();  // the default's first
   EXPECT_EQ(scene["name"], "Lens space L(7,2)");  // the text's first comment line
   EXPECT_EQ(scene["geometry"], "spherical");
   EXPECT_EQ(scene["manifold"], "generators");
@@ -158,12 +158,12 @@ TEST(WebSocket, GeneratorTextOpensTheSpaceItDescribes) {
 TEST(WebSocket, FramesCountGeodesicsCutOffAtTheCrossingCap) {
   Daemon daemon;
   WsClient client(daemon.port());
-  client.read_until("scene");
+  client.read_scene();
   std::ifstream in(std::string(GEODESIC_SOURCE_DIR) + "/scenes/torus-lamps.json");
   json document = json::parse(in);
   document["manifold"]["max_crossings"] = 1;
   client.send({{"type", "open"}, {"document", document}});
-  client.read_until("scene");
+  client.read_scene();
   client.send(kSmallFrames);
   const json first = client.read_frame_where(is_small).info;
   EXPECT_GT(first["truncated_geodesics"].get<uint64_t>(), 0u);
@@ -181,7 +181,7 @@ TEST(WebSocket, FramesCountGeodesicsCutOffAtTheCrossingCap) {
   EXPECT_GE(std::stoull(metrics.substr(at + 36)), moved["truncated_geodesics"].get<uint64_t>());
 
   client.send({{"type", "open"}, {"scene", "cornell-box"}});
-  client.read_until("scene");
+  client.read_scene();
   // Its own size (a scene's open resets the frame size): no frame of the torus left in flight.
   const json box = client.read_frame_where([](const json& f) { return f["height"] == 512; }).info;
   EXPECT_EQ(box["truncated_geodesics"], 0);
