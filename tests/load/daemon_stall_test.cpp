@@ -19,16 +19,13 @@
 #include "../net/daemon_fixture.h"
 #include "../jobs/job_daemon.h"
 #include "sanitizer.h"
+#include "test_constants.h"
 
 namespace geodesic::test {
 namespace {
 
 using nlohmann::json;
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // The reproduction at 7000 generators (337 KB): 45 minutes of full CPU before the
 // enumeration had a budget.

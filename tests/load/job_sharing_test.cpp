@@ -24,6 +24,7 @@
 #include "../jobs/job_daemon.h"
 #include "../net/daemon_fixture.h"
 #include "sanitizer.h"
+#include "test_constants.h"
 
 namespace geodesic::test {
 namespace {
@@ -31,10 +32,6 @@ namespace {
 using nlohmann::json;
 using Clock = std::chrono::steady_clock;
 using namespace std::chrono_literals;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 json heavy_scene() {
   std::mt19937 random(1);

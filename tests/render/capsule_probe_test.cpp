@@ -19,7 +19,7 @@ struct CapsuleCase {
   double s_max = 0;
 };
 
-CapsuleCase read_back(const ProbeCase& c) {
+CapsuleCase read_capsule_case(const ProbeCase& c) {
   return {{v3(c.capsule_a), v3(c.capsule_b), c.capsule_a[3]}, v3(c.chart), v3(c.normal),
           c.capsule_b[3]};
 }
@@ -76,7 +76,7 @@ TEST(CapsuleProbe, FloatIntersectionAndNormalMatchTheDoubleTwin) {
   int hits = 0, misses = 0, band = 0, caps = 0;
   double worst = 0;
   for (size_t i = 0; i < cases.size(); ++i) {
-    const CapsuleCase c = read_back(cases[i]);
+    const CapsuleCase c = read_capsule_case(cases[i]);
     const double s = intersect_capsule(c.capsule, c.o, c.d, 0, c.s_max);
     const float g = results[i].capsule[0];
     const double r = c.capsule.radius;
@@ -107,7 +107,7 @@ TEST(CapsuleProbe, FloatIntersectionAndNormalMatchTheDoubleTwin) {
   // The normal at the case's origin, away from the axis where its direction is undefined.
   int normals = 0;
   for (size_t i = 0; i < cases.size(); ++i) {
-    const CapsuleCase c = read_back(cases[i]);
+    const CapsuleCase c = read_capsule_case(cases[i]);
     if (distance_to_axis(c.capsule, c.o) < 1e-3) continue;
     ++normals;
     const Vec3 n = capsule_normal(c.capsule, c.o);

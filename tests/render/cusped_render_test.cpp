@@ -14,11 +14,11 @@
 #include "scene/catalogue.h"
 #include "scene/cusp_neighbourhoods.h"
 #include "scene/dirichlet_domain.h"
+#include "test_constants.h"
 
 namespace geodesic::test {
 namespace {
 
-constexpr auto kH3 = GeometryKind::Hyperbolic;
 
 // Glowing spheres near the origin and a glowing horosphere per ideal vertex (one colour per
 // cusp), the camera at the origin, primary rays only.

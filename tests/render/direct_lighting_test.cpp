@@ -25,11 +25,11 @@
 #include "geometry/model.h"
 #include "render/prepare/emitters.h"
 #include "render_fixture.h"
+#include "test_constants.h"
 
 namespace geodesic::test {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kAlbedo = 0.5;
 constexpr GeometryKind kGeometries[] = {GeometryKind::Euclidean, GeometryKind::Hyperbolic,
                                         GeometryKind::Spherical};
@@ -165,10 +165,10 @@ TEST(DirectLight, HorosphereLightsMatchTheirClosedForms) {
   }
 }
 
-using Triangle = std::array<Vec3, 3>;  // exponential coordinates, as the scene gives them
+using ExpTriangle = std::array<Vec3, 3>;  // exponential coordinates, as the scene gives them
 
 // The quad's two triangles as the loader makes them (scene_loader.cpp, append_quad).
-std::vector<Triangle> quad_triangles(const Vec3& corner, const Vec3& u, const Vec3& v) {
+std::vector<ExpTriangle> quad_triangles(const Vec3& corner, const Vec3& u, const Vec3& v) {
   return {{corner, corner + u, corner + u + v}, {corner, corner + u + v, corner + v}};
 }
 
@@ -195,10 +195,10 @@ double lambert_irradiance(std::vector<Vec3> polygon) {
 // quadrature in the chart at the origin, where they are flat: each triangle cut into n^2
 // pieces evaluated at their centroids, weighted by the model's area element there. In S3 the
 // long way round adds the same points at distance 2 pi - d, arriving from the other side.
-double triangles_irradiance(GeometryKind k, const std::vector<Triangle>& triangles) {
+double triangles_irradiance(GeometryKind k, const std::vector<ExpTriangle>& triangles) {
   const int n = 300;
   double sum = 0;
-  for (const Triangle& t : triangles) {
+  for (const ExpTriangle& t : triangles) {
     Vec3 q[3];
     for (int i = 0; i < 3; ++i) q[i] = model::chart(k, model::exp_origin(k, t[i]));
     const Vec3 e1 = q[1] - q[0], e2 = q[2] - q[0];

@@ -16,11 +16,11 @@
 #include "geometry/sampling.h"
 #include "geometry_probe.h"
 #include "twins/bsdf.h"
+#include "test_constants.h"
 
 namespace geodesic::test {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 class GlslReference : public ::testing::TestWithParam<GeometryKind> {
  protected:

@@ -14,11 +14,11 @@
 #include "render_fixture.h"
 #include "scene/scene_isometry.h"
 #include "scene/shape.h"
+#include "test_constants.h"
 
 namespace geodesic::test {
 namespace {
 
-constexpr GeometryKind kH3 = GeometryKind::Hyperbolic;
 
 // Uniform numbers in [lo, hi) from a fixed seed.
 class Uniform {

@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "geometry_probe.h"
+#include "test_constants.h"
 
 namespace geodesic::test {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr GeometryKind kE = GeometryKind::Euclidean, kH = GeometryKind::Hyperbolic,
                        kS = GeometryKind::Spherical;
 

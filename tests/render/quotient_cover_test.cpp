@@ -7,11 +7,11 @@
 #include "render_fixture.h"
 #include "scene/catalogue.h"
 #include "scene/dirichlet_domain.h"
+#include "test_constants.h"
 
 namespace geodesic::test {
 namespace {
 
-constexpr auto kS3 = GeometryKind::Spherical;
 
 // Every element of the finite group the generators span (closure under products).
 std::vector<Mat4> group_elements(const std::vector<Mat4>& generators) {

@@ -36,7 +36,7 @@ struct Seen {
   Vec3 o, d;
   double s_max;
 };
-Seen read_back(const ProbeCase& c) {
+Seen read_triangle_case(const ProbeCase& c) {
   return {{v3(c.triangle_a), v3(c.triangle_b), v3(c.triangle_c)}, v3(c.chart), v3(c.normal),
           c.triangle_a[3]};
 }
@@ -84,7 +84,7 @@ TEST(TriangleProbe, FloatIntersectionMatchesTheDoubleTwin) {
   const auto results = run_probe(GeometryKind::Euclidean, cases);
   std::vector<TwinCase> compared;
   for (size_t i = 0; i < cases.size(); ++i) {
-    const Seen s = read_back(cases[i]);
+    const Seen s = read_triangle_case(cases[i]);
     const auto twin = intersect_chart_triangle(s.o, s.d, s.t.a, s.t.b, s.t.c, 0, s.s_max);
     const Vec3 n = normalize(cross(s.t.b - s.t.a, s.t.c - s.t.a));
     compared.push_back({twin ? std::optional(std::array{twin->s, twin->u, twin->v}) : std::nullopt,

@@ -8,11 +8,12 @@
 #include "scene/catalogue.h"
 #include "scene/coxeter_orthoscheme.h"
 #include "scene/scene.h"
+#include "test_constants.h"
 
 namespace geodesic {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test::kPi;
 
 TEST(Lobachevsky, OddPeriodicAndDuplicating) {
   for (double x : {0.1, 0.4, 0.7, 1.0, 1.3}) {

@@ -14,19 +14,14 @@
 #include "scene/generator_file.h"
 #include "scene/moebius_text.h"
 #include "scene/scene.h"
+#include "test_constants.h"
 
 namespace geodesic {
 namespace {
 
-constexpr auto kH3 = GeometryKind::Hyperbolic;
+using test::kH3;
+using test::max_difference;
 const Complex kOmega(-0.5, std::sqrt(3.0) / 2);
-
-double max_difference(const Mat4& a, const Mat4& b) {
-  double d = 0;
-  for (int r = 0; r < 4; ++r)
-    for (int c = 0; c < 4; ++c) d = std::max(d, std::abs(a.m[r][c] - b.m[r][c]));
-  return d;
-}
 
 // The boundary point a null vector is aimed at.
 Complex boundary_of(const Vec4& x) {

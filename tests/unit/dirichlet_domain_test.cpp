@@ -15,13 +15,14 @@
 #include "scene/catalogue.h"
 #include "scene/generator_file.h"
 #include "scene/scene.h"
+#include "test_constants.h"
 
 namespace geodesic {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr double kPi = std::numbers::pi;
-const fs::path kSource = GEODESIC_SOURCE_DIR;
+using test::kPi;
+using test::kSource;
 const fs::path kCurvedSpaces = kSource / ".." / "shared" / "data" / "curved-spaces-gen";
 
 std::string read_text(const fs::path& path) {

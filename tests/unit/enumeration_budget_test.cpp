@@ -16,15 +16,13 @@
 #include "scene/generator_file.h"
 #include "scene/preparation_budget.h"
 #include "scene/scene.h"
+#include "test_constants.h"
 
 namespace geodesic {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using test::seconds_since;
 
 // A .gen text of E3 translations by (x, y, z), one matrix each (row convention).
 std::string translation(double x, double y, double z) {
@@ -41,7 +39,7 @@ std::string nearly_parallel(int count) {
   return text;
 }
 
-std::string error_of(const std::string& text) {
+std::string budget_error_of(const std::string& text) {
   try {
     generator_text_scene(text, "generators");
   } catch (const SceneError& e) {
@@ -50,7 +48,7 @@ std::string error_of(const std::string& text) {
   return "";
 }
 
-// error_of(text) under a preparation budget of `budget` seconds (never cancelled), and the
+// budget_error_of(text) under a preparation budget of `budget` seconds (never cancelled), and the
 // seconds it took.
 struct Refusal {
   std::string error;
@@ -62,14 +60,14 @@ Refusal refusal_within(const std::string& text, double budget) {
   std::string error;
   {
     const PreparationScope scope(budget, &never);
-    error = error_of(text);
+    error = budget_error_of(text);
   }
   return {error, seconds_since(start)};
 }
 
 TEST(EnumerationBudget, TwoHundredNearlyParallelTranslationsAreRefusedWellUnderASecond) {
   const auto start = Clock::now();
-  const std::string error = error_of(nearly_parallel(200));
+  const std::string error = budget_error_of(nearly_parallel(200));
   const double seconds = seconds_since(start);
   EXPECT_EQ(error.rfind("generators: ", 0), 0u) << error;
   // A lattice on a line: answered from the reduced generators' span, with no enumeration.
@@ -138,7 +136,7 @@ TEST(EnumerationBudget, CancellingEndsTheReadingAndTheEnumerationPromptly) {
     std::string error;
     std::thread worker([&] {
       const PreparationScope budget(600, &cancelled);
-      error = error_of(text);
+      error = budget_error_of(text);
     });
     std::this_thread::sleep_for(std::chrono::milliseconds(after_ms));
     const Clock::time_point cancel_time = Clock::now();

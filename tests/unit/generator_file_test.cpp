@@ -15,7 +15,7 @@
 namespace geodesic {
 namespace {
 
-std::string error_of(const std::string& text) {
+std::string generator_error_of(const std::string& text) {
   try {
     parse_generators(text, "test.gen");
   } catch (const SceneError& e) {
@@ -52,25 +52,25 @@ TEST(GeneratorFile, DetectsEachGeometry) {
 }
 
 TEST(GeneratorFile, ErrorsNameMatrixLineAndReason) {
-  EXPECT_EQ(error_of("1 0 0 0\n0 1 0 0\n0 0 1\n0 0 0 1\n"),
+  EXPECT_EQ(generator_error_of("1 0 0 0\n0 1 0 0\n0 0 1\n0 0 0 1\n"),
             "test.gen: matrix 1 (line 3): row 3 has 3 entries, not 4");
-  EXPECT_EQ(error_of("1 0 0 0\n0 1 0 0\n0 0 1 0\n"),
+  EXPECT_EQ(generator_error_of("1 0 0 0\n0 1 0 0\n0 0 1 0\n"),
             "test.gen: matrix 1 (line 1): has 3 rows, not 4 (matrices are 4x4)");
-  EXPECT_EQ(error_of("1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n\n1 0 0 0\n0 1 x 0\n0 0 1 0\n2 0 0 1\n"),
+  EXPECT_EQ(generator_error_of("1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n\n1 0 0 0\n0 1 x 0\n0 0 1 0\n2 0 0 1\n"),
             "test.gen: matrix 2 (line 7): \"x\" is not a number");
-  EXPECT_EQ(error_of("1 0 0 0\n0 1 0 0\n0 0 nan 0\n2 0 0 1\n"),
+  EXPECT_EQ(generator_error_of("1 0 0 0\n0 1 0 0\n0 0 nan 0\n2 0 0 1\n"),
             "test.gen: matrix 1 (line 3): entry \"nan\" is not finite");
-  EXPECT_NE(error_of("2 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n")
+  EXPECT_NE(generator_error_of("2 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n")
                 .find("matrix 1 (line 1): not an isometry of euclidean, hyperbolic or spherical"),
             std::string::npos);
   // A translation (E3 only) then a turn in the zw plane (S3 only).
-  EXPECT_NE(error_of("1 0 0 0\n0 1 0 0\n0 0 1 0\n1 0 0 1\n\n"
+  EXPECT_NE(generator_error_of("1 0 0 0\n0 1 0 0\n0 0 1 0\n1 0 0 1\n\n"
                      "1 0 0 0\n0 1 0 0\n0 0 0 1\n0 0 -1 0\n")
                 .find("matrix 2 (line 6): is an isometry of spherical space only, but the "
                       "matrices before it are not (euclidean)"),
             std::string::npos);
-  EXPECT_NE(error_of("# nothing\n").find("no matrices"), std::string::npos);
-  EXPECT_NE(error_of("0 -1 0 0\n1 0 0 0\n0 0 1 0\n0 0 0 1\n").find("ambiguous"),
+  EXPECT_NE(generator_error_of("# nothing\n").find("no matrices"), std::string::npos);
+  EXPECT_NE(generator_error_of("0 -1 0 0\n1 0 0 0\n0 0 1 0\n0 0 0 1\n").find("ambiguous"),
             std::string::npos);
 }
 
@@ -103,58 +103,58 @@ TEST(GeneratorFile, ReadsSnapPyPairingMatrices) {
       for (int c = 0; c < 4; ++c)
         EXPECT_NEAR(set.generators[k].m[r][c], sw.generators[k].m[r][c], 1e-15);
   EXPECT_NEAR(dirichlet_domain(set.kind, set.generators).volume, sw.volume, 1e-8);
-  EXPECT_EQ(error_of("[[1, 0, 0, 0], [0, 1, 0]]"),
+  EXPECT_EQ(generator_error_of("[[1, 0, 0, 0], [0, 1, 0]]"),
             "test.gen: matrix 1 (line 1): row 2, [0, 1, 0], has 3 entries, not 4");
-  EXPECT_EQ(error_of("[[1, 0, 0, 0], [0, 1, 0, 0],\n [0, 0, 1, 0], [0, 0, 0, 1]],\n[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0, 0]]"),
+  EXPECT_EQ(generator_error_of("[[1, 0, 0, 0], [0, 1, 0, 0],\n [0, 0, 1, 0], [0, 0, 0, 1]],\n[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0, 0]]"),
             "test.gen: matrix 2 (line 3): row 3, [0, 0, 1, 0, 0], has 5 entries, not 4");
 }
 
 // Junk inside a row (a request's bytes pasted into an entry, a word, a stray character) is
 // refused by name while reading, in either bracket format; words between rows are not rows.
 TEST(GeneratorFile, RefusesJunkInsideARowByName) {
-  EXPECT_EQ(error_of("[[1, 1], [0, 1]]\n[[5 - 0.866OST /api/j{aobs 025403784scene*I  1], [0, 1]]"),
+  EXPECT_EQ(generator_error_of("[[1, 1], [0, 1]]\n[[5 - 0.866OST /api/j{aobs 025403784scene*I  1], [0, 1]]"),
             "test.gen: matrix 2 (line 2): \"OST\" inside [5 - 0.866OST /api/j{aobs "
             "025403784scene*I  1] is not part of a number");
-  EXPECT_NE(error_of("[[1, 1], [0, 1]]\n[[1, 0], [0.5 / 2, 1]]").find("matrix 2 (line 2): \"/\""),
+  EXPECT_NE(generator_error_of("[[1, 1], [0, 1]]\n[[1, 0], [0.5 / 2, 1]]").find("matrix 2 (line 2): \"/\""),
             std::string::npos);
-  EXPECT_NE(error_of("[[1, nan], [0, 1]]").find("\"nan\" inside [1, nan]"), std::string::npos);
-  EXPECT_NE(error_of("[[1, 0, 0, 0], [0, 1, 0, 0],\n [0, 0, 1, 0], [0, 0, 0, 1]],\n"
+  EXPECT_NE(generator_error_of("[[1, nan], [0, 1]]").find("\"nan\" inside [1, nan]"), std::string::npos);
+  EXPECT_NE(generator_error_of("[[1, 0, 0, 0], [0, 1, 0, 0],\n [0, 0, 1, 0], [0, 0, 0, 1]],\n"
                      "[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0],\n [0, x1, 0, 1]]")
                 .find("matrix 2 (line 4): \"x1\" inside [0, x1, 0, 1]"),
             std::string::npos);
   // An imaginary unit is no part of an O(3,1) entry.
-  EXPECT_NE(error_of("[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 2*I, 1]]").find("\"I\""),
+  EXPECT_NE(generator_error_of("[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 2*I, 1]]").find("\"I\""),
             std::string::npos);
   // Entry characters out of place: what a fuzzer once got past the reader as two Moebius
   // matrices, whose domain search then ran for seconds before refusing them.
-  EXPECT_EQ(error_of("# m004%2e%2e\n[.  1+0j), 2j], [-1j, (1-2j  1+0j), 2j], [-1j, (1-)]]"),
+  EXPECT_EQ(generator_error_of("# m004%2e%2e\n[.  1+0j), 2j], [-1j, (1-2j  1+0j), 2j], [-1j, (1-)]]"),
             "test.gen: matrix 1 (line 2): a \".\" has no digit beside it inside [.  1+0j), 2j]");
-  EXPECT_NE(error_of("[[1, 1], [0, 1+0j)]]").find("matrix 1 (line 1): a \")\" closes no \"(\" "
+  EXPECT_NE(generator_error_of("[[1, 1], [0, 1+0j)]]").find("matrix 1 (line 1): a \")\" closes no \"(\" "
                                                   "inside [0, 1+0j)]"),
             std::string::npos);
-  EXPECT_NE(error_of("[[1, 1], [0, (1-)]]").find("a \"-\" has no number after it inside [0, (1-)]"),
+  EXPECT_NE(generator_error_of("[[1, 1], [0, (1-)]]").find("a \"-\" has no number after it inside [0, (1-)]"),
             std::string::npos);
-  EXPECT_NE(error_of("[[1, 1], [0, (1+2j]]").find("a \"(\" is not closed inside [0, (1+2j]"),
+  EXPECT_NE(generator_error_of("[[1, 1], [0, (1+2j]]").find("a \"(\" is not closed inside [0, (1+2j]"),
             std::string::npos);
-  EXPECT_NE(error_of("[[1, 1], [0, *I]]").find("a \"*\" follows no number"), std::string::npos);
-  EXPECT_NE(error_of("[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 2*, 1]]")
+  EXPECT_NE(generator_error_of("[[1, 1], [0, *I]]").find("a \"*\" follows no number"), std::string::npos);
+  EXPECT_NE(generator_error_of("[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 2*, 1]]")
                 .find("matrix 1 (line 1): a \"*\" is not followed by an imaginary unit"),
             std::string::npos);
   // Entries outside every row would be read into a matrix: refused by name. A fuzzer's
   // unclosed row read "1 186602540378" into a Moebius matrix moving the origin by 26.
-  EXPECT_EQ(error_of("# m004\n[1 ?186602540378n\n[1 (1-2j)]]"),
+  EXPECT_EQ(generator_error_of("# m004\n[1 ?186602540378n\n[1 (1-2j)]]"),
             "test.gen: matrix 1 (line 2): \"1\" lies outside every row [...]: entries belong "
             "inside rows");
-  EXPECT_EQ(error_of("[[1, 1], [0, 1]] 2\n[[1, 0], [0, 1]]"),
+  EXPECT_EQ(generator_error_of("[[1, 1], [0, 1]] 2\n[[1, 0], [0, 1]]"),
             "test.gen: matrix 2 (line 1): \"2\" lies outside every row [...]: entries belong "
             "inside rows");
-  EXPECT_NE(error_of("[[1, 1], j [0, 1]]").find("\"j\" lies outside every row"),
+  EXPECT_NE(generator_error_of("[[1, 1], j [0, 1]]").find("\"j\" lies outside every row"),
             std::string::npos);
   // A Moebius entry is named whole, as its reader would take it, on its own line.
-  EXPECT_NE(error_of("[[1, 1],\n\n 0.5 - 2*I [0, 1]]")
+  EXPECT_NE(generator_error_of("[[1, 1],\n\n 0.5 - 2*I [0, 1]]")
                 .find("matrix 1 (line 3): \"0.5 - 2*I\" lies outside every row"),
             std::string::npos);
-  EXPECT_NE(error_of("[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]], [0.5").find(
+  EXPECT_NE(generator_error_of("[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]], [0.5").find(
                 "matrix 2 (line 1): \"0.5\" lies outside every row"),
             std::string::npos);
   // Exponents, units, Python's complex literals and words outside rows still read.

@@ -15,11 +15,12 @@
 #include "scene/default_scene.h"
 #include "scene/generator_file.h"
 #include "scene/scene_loader.h"
+#include "test_constants.h"
 
 namespace geodesic {
 namespace {
 
-const std::filesystem::path kSource = GEODESIC_SOURCE_DIR;
+using test::kSource;
 
 Scene parse(const std::string& geometry, const std::string& manifold) {
   const auto doc = nlohmann::ordered_json::parse(
@@ -28,7 +29,7 @@ Scene parse(const std::string& geometry, const std::string& manifold) {
   return parse_scene(doc, kSource / "scenes" / "catalogue");
 }
 
-std::string error_of(const std::string& geometry, const std::string& manifold) {
+std::string manifold_error_of(const std::string& geometry, const std::string& manifold) {
   try {
     parse(geometry, manifold);
   } catch (const SceneError& e) {
@@ -61,28 +62,28 @@ TEST(GeneratorManifold, InlineTextAndMatrices) {
 TEST(GeneratorManifold, LensSpaceByFormula) {
   const Scene s = parse("spherical", R"({"type": "lens", "p": 7, "q": 2})");
   EXPECT_EQ(s.manifold.faces.size(), 6u);
-  EXPECT_NE(error_of("spherical", R"({"type": "lens", "p": 6, "q": 4})")
+  EXPECT_NE(manifold_error_of("spherical", R"({"type": "lens", "p": 6, "q": 4})")
                 .find("manifold.q: lens space L(6, 4): p and q must be coprime"),
             std::string::npos);
   // L(p, 1) preserves a great circle: its domain is charted in pieces, one cell each.
   EXPECT_GT(parse("spherical", R"({"type": "lens", "p": 9, "q": 1})").manifold.pieces.size(), 8u);
-  EXPECT_NE(error_of("euclidean", R"({"type": "lens", "p": 5, "q": 2})")
+  EXPECT_NE(manifold_error_of("euclidean", R"({"type": "lens", "p": 5, "q": 2})")
                 .find("manifold.type: the generators are isometries of spherical space, but the "
                       "scene's geometry is euclidean"),
             std::string::npos);
 }
 
 TEST(GeneratorManifold, ErrorsNameTheField) {
-  EXPECT_NE(error_of("euclidean", R"({"type": "generators", "file": "missing.gen"})")
+  EXPECT_NE(manifold_error_of("euclidean", R"({"type": "generators", "file": "missing.gen"})")
                 .find("manifold.file: "),
             std::string::npos);
-  EXPECT_NE(error_of("euclidean", R"({"type": "generators"})")
+  EXPECT_NE(manifold_error_of("euclidean", R"({"type": "generators"})")
                 .find("manifold: needs exactly one of \"file\", \"text\" or \"matrices\""),
             std::string::npos);
-  EXPECT_NE(error_of("euclidean", R"({"type": "generators", "text": "1 0 0 0\n0 1 0 0\n0 0 1\n0 0 0 1\n"})")
+  EXPECT_NE(manifold_error_of("euclidean", R"({"type": "generators", "text": "1 0 0 0\n0 1 0 0\n0 0 1\n0 0 0 1\n"})")
                 .find("manifold.text: matrix 1 (line 3): row 3 has 3 entries, not 4"),
             std::string::npos);
-  EXPECT_NE(error_of("euclidean", R"({"type": "generators", "matrices": [[[2,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]]})")
+  EXPECT_NE(manifold_error_of("euclidean", R"({"type": "generators", "matrices": [[[2,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,1]]]})")
                 .find("manifold.matrices: matrix 1: not an isometry"),
             std::string::npos);
 }
@@ -93,11 +94,11 @@ TEST(GeneratorManifold, ErrorsNameTheField) {
 TEST(GeneratorManifold, ANearIsometryThatBreaksTheGroupIsNamedAsTheLikelyCause) {
   const std::vector<Mat4> exact = find_catalogue_entry("seifert-weber")->generators;
   const std::string fine = nlohmann::json(format_gen(exact, "#\tSeifert-Weber")).dump();
-  EXPECT_EQ(error_of("hyperbolic", R"({"type": "generators", "text": )" + fine + "}"), "(no error)");
+  EXPECT_EQ(manifold_error_of("hyperbolic", R"({"type": "generators", "text": )" + fine + "}"), "(no error)");
   std::vector<Mat4> sheared = exact;
   sheared[0].m[0][1] += 1e-7;
   const std::string text = nlohmann::json(format_gen(sheared, "#\tSheared")).dump();
-  const std::string error = error_of("hyperbolic", R"({"type": "generators", "text": )" + text + "}");
+  const std::string error = manifold_error_of("hyperbolic", R"({"type": "generators", "text": )" + text + "}");
   EXPECT_TRUE(error.starts_with("manifold: generators: ")) << error;
   EXPECT_NE(error.find("note: the matrices are isometries only to "), std::string::npos) << error;
   EXPECT_NE(error.find("can generate another group than the one meant: give them to more digits"),

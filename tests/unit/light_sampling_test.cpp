@@ -13,11 +13,12 @@
 #include "render/prepare/emitters.h"
 #include "scene/shape.h"
 #include "common/shape_kinds.h"
+#include "test_constants.h"
 
 namespace geodesic {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test::kPi;
 constexpr double kSignificance = 1e-3;
 const GeometryKind kKinds[] = {GeometryKind::Euclidean, GeometryKind::Hyperbolic,
                                GeometryKind::Spherical};

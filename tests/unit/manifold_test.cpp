@@ -14,25 +14,23 @@
 
 #include "scene/manifold_loader.h"
 #include "scene/scene.h"
+#include "test_constants.h"
 
 namespace geodesic {
 namespace {
 
 using model::chart;
 using model::lift;
-constexpr double kPi = std::numbers::pi, kPhi = std::numbers::phi;
-constexpr auto kE3 = GeometryKind::Euclidean, kH3 = GeometryKind::Hyperbolic,
-               kS3 = GeometryKind::Spherical;
+using test::kE3;
+using test::kH3;
+using test::kPi;
+using test::kS3;
+using test::max_difference;
+constexpr double kPhi = std::numbers::phi;
 
-double max_difference(const Mat4& a, const Mat4& b) {
-  double d = 0;
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) d = std::max(d, std::abs(a.m[i][j] - b.m[i][j]));
-  return d;
-}
 double distance_from_identity(const Mat4& g) { return max_difference(g, Mat4::identity()); }
 
-std::string error_of(const std::function<void()>& f) {
+std::string scene_error_of(const std::function<void()>& f) {
   try {
     f();
   } catch (const SceneError& e) {
@@ -217,7 +215,7 @@ TEST(EdgeCycles, CatchAWrongTwist) {
   // The mirror image (the other sense on every face) is the same space, reflected.
   EXPECT_NO_THROW(validate_manifold(kH3, twisted_seifert_weber(std::vector<double>(12, t))));
   // A tenth turn maps faces onto faces but piles 3 x 72 deg around an edge.
-  const std::string tenth = error_of(
+  const std::string tenth = scene_error_of(
       [&] { validate_manifold(kH3, twisted_seifert_weber(std::vector<double>(12, -kPi / 5))); });
   EXPECT_NE(tenth.find("edge cycle"), std::string::npos) << tenth;
   EXPECT_NE(tenth.find("216.0"), std::string::npos) << tenth;
@@ -225,7 +223,7 @@ TEST(EdgeCycles, CatchAWrongTwist) {
   std::vector<double> mixed(12, -t);
   mixed[0] = t, mixed[1] = t;
   const std::string one_pair =
-      error_of([&] { validate_manifold(kH3, twisted_seifert_weber(mixed)); });
+      scene_error_of([&] { validate_manifold(kH3, twisted_seifert_weber(mixed)); });
   EXPECT_NE(one_pair.find("edge cycle"), std::string::npos) << one_pair;
 }
 
@@ -308,7 +306,7 @@ Manifold read(const nlohmann::ordered_json& doc, GeometryKind kind) {
   return read_manifold(JsonNode(doc, "manifold"), kind);
 }
 std::string read_error(const nlohmann::ordered_json& doc, GeometryKind kind = kE3) {
-  return error_of([&] { read(doc, kind); });
+  return scene_error_of([&] { read(doc, kind); });
 }
 
 TEST(ManifoldLoader, ReadsEveryType) {
@@ -418,7 +416,7 @@ TEST(ManifoldValidation, AcceptsTheQuarterTurnSpace) {
 TEST(ManifoldValidation, HyperbolicDomainsMustHaveFiniteVolume) {
   std::vector<DomainFace> faces = make_mirrored_dodecahedron().faces;
   for (DomainFace& f : faces) f.delta = 0.8;  // vertices beyond the Klein ball
-  EXPECT_EQ(error_of([&] { validate_manifold(kH3, make_generic(kH3, faces)); })
+  EXPECT_EQ(scene_error_of([&] { validate_manifold(kH3, make_generic(kH3, faces)); })
                 .rfind("manifold: the domain reaches beyond the sphere at infinity (vertex 0 at "
                        "Klein radius 1.0",
                        0),

@@ -10,11 +10,11 @@
 
 #include "geometry/model.h"
 #include "model_sampler.h"
+#include "test_constants.h"
 
 namespace geodesic::test {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kInf = 1e300;
 
 class ModelSphereTest : public ::testing::TestWithParam<GeometryKind> {

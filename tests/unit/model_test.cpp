@@ -10,15 +10,14 @@
 #include <numbers>
 
 #include "model_sampler.h"
+#include "test_constants.h"
 
 namespace geodesic::test {
 namespace {
 
 using model::inner;
-constexpr double kPi = std::numbers::pi;
 // Round-off bounds below are multiples of double's epsilon times the size of the coordinates
 // involved, which grow like cosh(distance from the origin) in H3.
-constexpr double kEps = DBL_EPSILON;
 
 class ModelTest : public ::testing::TestWithParam<GeometryKind> {
  protected:

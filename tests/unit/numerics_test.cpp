@@ -16,11 +16,11 @@
 
 #include "geometry/model.h"
 #include "model_sampler.h"
+#include "test_constants.h"
 
 namespace geodesic::test {
 namespace {
 
-constexpr double kEps = DBL_EPSILON;
 
 // The worst of |<p,p> - K| (E3 |w - 1|) and, for the frame, |<e_i,e_j> - delta_ij| and
 // |<p, e_i>| over a pose.

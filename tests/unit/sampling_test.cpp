@@ -10,11 +10,12 @@
 #include <numbers>
 #include <random>
 #include <vector>
+#include "test_constants.h"
 
 namespace geodesic {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test::kPi;
 
 std::vector<Vec3> test_normals() {
   std::vector<Vec3> normals = {{0, 0, 1}, {0, 0, -1}, {1, 0, -0.0}, {0, 1, 0},

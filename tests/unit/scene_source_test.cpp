@@ -27,7 +27,7 @@ std::string text_of(const fs::path& path) {
   return text.str();
 }
 
-std::string error_of(const SceneSource& source) {
+std::string source_error_of(const SceneSource& source) {
   try {
     resolve_scene(source, kSceneDocumentDir);
   } catch (const SceneError& e) {
@@ -111,21 +111,21 @@ TEST(SceneSource, FilesOnTheCommandLineResolve) {
 }
 
 TEST(SceneSource, BadSourcesNameTheFieldAndTheReason) {
-  EXPECT_EQ(error_of(SceneSource::bundled("no-such-scene")),
+  EXPECT_EQ(source_error_of(SceneSource::bundled("no-such-scene")),
             "scene: unknown bundled scene \"no-such-scene\"");
   // A name is a listed scene, never a path.
-  EXPECT_EQ(error_of(SceneSource::bundled("../scenes/cornell-box")),
+  EXPECT_EQ(source_error_of(SceneSource::bundled("../scenes/cornell-box")),
             "scene: unknown bundled scene \"../scenes/cornell-box\"");
-  EXPECT_EQ(error_of(SceneSource::inline_document(patched(
+  EXPECT_EQ(source_error_of(SceneSource::inline_document(patched(
                 R"({"objects": [{"type": "sphere", "material": "red", "center": [0, 0, 0], "radius": -1}]})"))),
             "objects[0].radius: must be > 0");
   // A client's document may name files inside the scene directory only.
-  EXPECT_EQ(error_of(SceneSource::inline_document(patched(
+  EXPECT_EQ(source_error_of(SceneSource::inline_document(patched(
                 R"({"objects": [{"type": "mesh", "material": "red", "file": "../CMakeLists.txt"}]})"))),
             "objects[0].file: must name a file inside the scene directory");
-  const std::string generators = error_of(SceneSource::generator_text("1 0 0\n0 1 0\n"));
+  const std::string generators = source_error_of(SceneSource::generator_text("1 0 0\n0 1 0\n"));
   EXPECT_TRUE(generators.starts_with("generators: matrix 1")) << generators;
-  const std::string missing = error_of(SceneSource::document_file("no/such/scene.json"));
+  const std::string missing = source_error_of(SceneSource::document_file("no/such/scene.json"));
   EXPECT_EQ(missing, "no/such/scene.json: cannot open file (missing or not a regular file)");
 }
 

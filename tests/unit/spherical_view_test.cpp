@@ -9,11 +9,12 @@
 #include "scene/catalogue.h"
 #include "scene/default_scene.h"
 #include "scene/dirichlet_domain.h"
+#include "test_constants.h"
 
 namespace geodesic {
 namespace {
 
-constexpr GeometryKind kS3 = GeometryKind::Spherical;
+using test::kS3;
 
 Mat4 antipodal_map() {
   Mat4 m = Mat4::identity();
