@@ -37,6 +37,11 @@ inline Scene small_scene(const std::string& relative, int width, int height) {
   return scene;
 }
 
+// A bundled scene (scenes/<name>.json), size x size pixels.
+inline Scene bundled_scene(const std::string& name, int size = 16) {
+  return small_scene("scenes/" + name + ".json", size, size);
+}
+
 // The scene under the paper's lighting model with its defaults (no Russian roulette): the
 // model the geometry tests were written against (eq. 2.2 is deterministic per hit).
 inline Scene paper_model(Scene scene) {
