@@ -7,12 +7,14 @@
 // as exponential coordinates there): the cost of curvature on a comparable scene.
 //   geodesic_bench --quotients [SCENE.json ...] [--size N] [--spp N] [--repeat R]
 // measures the Cornell box and the quotient scenes (default: the bundled ones and a lens and a
-// Coxeter space of the catalogue), each at its own depth, with the auto back end, in one run:
-// paths/s, the device's counters (chart segments traced per path, face crossings per segment,
-// segments cut off at max_crossings) and the ratio to the Cornell box.
+// Coxeter space of the catalogue), each at its own depth, with the auto back end, in one run of
+// R paired rounds (each scene's run beside one of the Cornell box): median paths/s, the
+// device's counters (chart segments traced per path, face crossings per segment, segments cut
+// off at max_crossings) and the median and range of the ratio to the Cornell box.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -61,9 +63,29 @@ Scene load_for_bench(const std::string& path, int size, bool russian_roulette) {
   return scene;
 }
 
-// The Cornell box, then each scene, at its own depth, with the auto back end.
+// One timed run of `spp` samples on a renderer already warmed up: paths/s.
+double timed_run(Renderer& renderer, const Scene& scene, uint32_t spp) {
+  renderer.reset();
+  const auto start = std::chrono::steady_clock::now();
+  renderer.add_samples(spp);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return double(spp) * scene.render.width * scene.render.height / seconds;
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// The Cornell box and each scene, at its own depth, with the auto back end, in `rounds` paired
+// rounds: in each, every scene runs right beside a run of the Cornell box (before it in even
+// rounds, after it in odd ones), and its ratio is that pair's. A shared machine's speed drifts
+// by tens of percent over a minute; a pair's two runs, a second or two apart, see the same
+// machine. Printed: the median paths/s, the median ratio and the ratios' range.
 int quotient_table(std::vector<std::string> scenes, const std::string& device, int size,
-                   uint32_t spp, int repeat) {
+                   uint32_t spp, int rounds) {
   const std::string dir = std::string(GEODESIC_SOURCE_DIR) + "/scenes/";
   if (scenes.empty())
     for (const char* name :
@@ -73,25 +95,50 @@ int quotient_table(std::vector<std::string> scenes, const std::string& device, i
       scenes.push_back(dir + name + ".json");
   scenes.insert(scenes.begin(), dir + "cornell-box.json");
   VulkanContext ctx(device);
-  std::printf("%u spp per run, best of %d, device %s\n", spp, repeat,
+  std::printf("%u spp per run, %d paired rounds, device %s\n", spp, rounds,
               ctx.description().name.c_str());
-  std::printf("%-24s %5s %9s %7s %9s %9s %10s %9s\n", "scene", "depth", "size", "M p/s",
-              "segs/path", "cross/geo", "truncated", "x Cornell");
-  double cornell = 0;
+  struct Row {
+    std::string path;
+    Scene scene;
+    std::unique_ptr<Renderer> renderer;
+    std::vector<double> rates, ratios;
+  };
+  std::vector<Row> rows;
   for (const std::string& path : scenes) {
-    const Scene scene = load_for_bench(path, size, false);
-    const Measurement m = measure(ctx, scene, BackendKind::Auto, spp, repeat);
-    if (cornell == 0) cornell = m.paths_per_second;
-    // Each traced segment is one traversal; a geodesic is its first segment and one more per
-    // face crossed; truncated: geodesics cut off at max_crossings, per geodesic.
-    const double segments = double(m.counters.traced_rays);
-    const double geodesics = std::max(segments - double(m.counters.crossed_faces), 1.0);
-    const std::string name = path.substr(path.find_last_of('/') + 1);
-    std::printf("%-24s %5d %4dx%-4d %7.4f %9.2f %9.2f %10.2e %9.3f\n",
-                name.substr(0, name.size() - 5).c_str(), scene.render.max_depth,
-                scene.render.width, scene.render.height, m.paths_per_second / 1e6,
-                segments / m.paths, double(m.counters.crossed_faces) / geodesics,
-                double(m.counters.truncated_rays) / geodesics, m.paths_per_second / cornell);
+    Row row{path, load_for_bench(path, size, false), nullptr, {}, {}};
+    row.renderer = std::make_unique<Renderer>(ctx, row.scene, BackendKind::Auto);
+    row.renderer->add_samples(1);  // compiles the pipeline, warms the caches
+    rows.push_back(std::move(row));
+  }
+  Row& cornell = rows.front();
+  for (int round = 0; round < std::max(rounds, 1); ++round)
+    for (size_t i = 1; i < rows.size(); ++i) {
+      const bool cornell_first = round % 2 == 0;
+      double base = cornell_first ? timed_run(*cornell.renderer, cornell.scene, spp) : 0;
+      const double rate = timed_run(*rows[i].renderer, rows[i].scene, spp);
+      if (!cornell_first) base = timed_run(*cornell.renderer, cornell.scene, spp);
+      cornell.rates.push_back(base);
+      rows[i].rates.push_back(rate);
+      rows[i].ratios.push_back(rate / base);
+    }
+  cornell.ratios = {1.0};
+  std::printf("%-24s %5s %9s %7s %9s %9s %10s %9s %11s\n", "scene", "depth", "size", "M p/s",
+              "segs/path", "cross/geo", "truncated", "x Cornell", "range");
+  for (Row& row : rows) {
+    // The device's counters of the last run. Each traced segment is one traversal; a geodesic
+    // is its first segment and one more per face crossed; truncated: geodesics cut off at
+    // max_crossings, per geodesic.
+    const TraceCounters counters = row.renderer->trace_counters();
+    const double paths = double(spp) * row.scene.render.width * row.scene.render.height;
+    const double segments = double(counters.traced_rays);
+    const double geodesics = std::max(segments - double(counters.crossed_faces), 1.0);
+    const auto [low, high] = std::minmax_element(row.ratios.begin(), row.ratios.end());
+    const std::string stem = row.path.substr(row.path.find_last_of('/') + 1);
+    std::printf("%-24s %5d %4dx%-4d %7.4f %9.2f %9.2f %10.2e %9.3f %5.3f-%5.3f\n",
+                stem.substr(0, stem.size() - 5).c_str(), row.scene.render.max_depth,
+                row.scene.render.width, row.scene.render.height, median(row.rates) / 1e6,
+                segments / paths, double(counters.crossed_faces) / geodesics,
+                double(counters.truncated_rays) / geodesics, median(row.ratios), *low, *high);
   }
   return 0;
 }

@@ -3,7 +3,8 @@
 table against their thresholds (docs/benchmarks.md, "Quotient spaces against the Cornell box"):
 
   paths/s    every scene `geodesic_bench --quotients` samples, at 512², each at its own depth,
-             >= 0.5x the Cornell box's paths/s in the same run;
+             >= 0.5x the Cornell box's paths/s in the same run (the median ratio of five
+             paired rounds, each scene's run beside one of the Cornell box; its range beside);
   still 5 %  from a still camera at 512² (`geodesic_bench_walkthrough`), the mirrored
              dodecahedron and the Poincaré sphere reach 5 % estimated error within 30 s (when
              the 60-s still phase ends above 5 %, extrapolated along t^-1/2 and marked ~);
@@ -39,14 +40,14 @@ def run(command):
 
 
 def paths_per_second(build, device):
-    """{scene: (M paths/s, x Cornell)} from geodesic_bench --quotients at 512²."""
+    """{scene: (M paths/s, x Cornell, its range)} from geodesic_bench --quotients at 512²."""
     command = [f"{build}/bench/geodesic_bench", "--quotients", "--size", "512", "--spp", "2",
-               "--repeat", "2"] + (["--device", device] if device else [])
+               "--repeat", "5"] + (["--device", device] if device else [])
     rows = {}
     for line in run(command).splitlines():
         fields = line.split()
-        if len(fields) == 8 and fields[3].replace(".", "", 1).isdigit():
-            rows[fields[0]] = (float(fields[3]), float(fields[7]))
+        if len(fields) == 9 and fields[3].replace(".", "", 1).isdigit():
+            rows[fields[0]] = (float(fields[3]), float(fields[7]), fields[8])
     return rows
 
 
@@ -110,13 +111,13 @@ def main():
     def mark(value, extrapolated):
         return ("~" if extrapolated else "") + f"{value:.3g} s"
 
-    print(f"\n{'scene':<24} {'M paths/s':>9} {'x Cornell':>9} {'>= 0.5':>8}   "
+    print(f"\n{'scene':<24} {'M paths/s':>9} {'x Cornell':>9} {'range':>11} {'>= 0.5':>8}   "
           f"{'t(1 %) 64²':>11} {'x Cornell':>9} {'<= 3':>8}   {'still 5 % 512²':>14} {'<= 30 s':>8}")
     base = converge.get("cornell-box")
     for name in names:
         cells = []
-        rate, ratio = paths[name]
-        cells.append(f"{rate:>9.3f} {ratio:>9.3f} "
+        rate, ratio, spread = paths[name]
+        cells.append(f"{rate:>9.3f} {ratio:>9.3f} {spread:>11} "
                      f"{'' if name == 'cornell-box' else verdict(ratio >= 0.5):>8}")
         if name in converge and base:
             t, extrapolated = converge[name]
