@@ -32,22 +32,30 @@ struct Measurement {
   TraceCounters counters;  // of the best run
 };
 
-// Best of `repeat` timed runs (after a warm-up sample that also compiles the pipeline): the
-// least-disturbed run is the fairest figure on a shared 2-core machine. A run is one dispatch
+// Seconds for one run of `spp` samples (the accumulation reset first). A run is one dispatch
 // of all its samples, as the service's slices hold many: a dispatch per sample measured a GPU's
 // submissions (the Cornell box on an H200: 0.3 ms of work behind each), not its paths.
+double timed_run(Renderer& renderer, uint32_t spp) {
+  renderer.reset();
+  const auto start = std::chrono::steady_clock::now();
+  renderer.add_samples(spp);
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double paths_of(const Scene& scene, uint32_t spp) {
+  return double(spp) * scene.render.width * scene.render.height;
+}
+
+// Best of `repeat` timed runs (after a warm-up sample that also compiles the pipeline): the
+// least-disturbed run is the fairest figure on a shared 2-core machine.
 Measurement measure(VulkanContext& ctx, const Scene& scene, BackendKind backend, uint32_t spp,
                     int repeat) {
   Renderer renderer(ctx, scene, backend);
   renderer.add_samples(1);
   Measurement best;
   for (int r = 0; r < repeat; ++r) {
-    renderer.reset();
-    const auto start = std::chrono::steady_clock::now();
-    renderer.add_samples(spp);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const double paths = double(spp) * scene.render.width * scene.render.height;
+    const double seconds = timed_run(renderer, spp);
+    const double paths = paths_of(scene, spp);
     if (paths / seconds > best.paths_per_second)
       best = {paths / seconds, double(renderer.traced_rays()) / seconds, paths,
               renderer.trace_counters()};
@@ -61,16 +69,6 @@ Scene load_for_bench(const std::string& path, int size, bool russian_roulette) {
   scene.render.russian_roulette = russian_roulette;
   if (size > 0) scene.render.width = scene.render.height = size;
   return scene;
-}
-
-// One timed run of `spp` samples on a renderer already warmed up: paths/s.
-double timed_run(Renderer& renderer, const Scene& scene, uint32_t spp) {
-  renderer.reset();
-  const auto start = std::chrono::steady_clock::now();
-  renderer.add_samples(spp);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return double(spp) * scene.render.width * scene.render.height / seconds;
 }
 
 double median(std::vector<double> values) {
@@ -114,9 +112,10 @@ int quotient_table(std::vector<std::string> scenes, const std::string& device, i
   for (int round = 0; round < std::max(rounds, 1); ++round)
     for (size_t i = 1; i < rows.size(); ++i) {
       const bool cornell_first = round % 2 == 0;
-      double base = cornell_first ? timed_run(*cornell.renderer, cornell.scene, spp) : 0;
-      const double rate = timed_run(*rows[i].renderer, rows[i].scene, spp);
-      if (!cornell_first) base = timed_run(*cornell.renderer, cornell.scene, spp);
+      const double cornell_paths = paths_of(cornell.scene, spp);
+      double base = cornell_first ? cornell_paths / timed_run(*cornell.renderer, spp) : 0;
+      const double rate = paths_of(rows[i].scene, spp) / timed_run(*rows[i].renderer, spp);
+      if (!cornell_first) base = cornell_paths / timed_run(*cornell.renderer, spp);
       cornell.rates.push_back(base);
       rows[i].rates.push_back(rate);
       rows[i].ratios.push_back(rate / base);
@@ -129,7 +128,7 @@ int quotient_table(std::vector<std::string> scenes, const std::string& device, i
     // is its first segment and one more per face crossed; truncated: geodesics cut off at
     // max_crossings, per geodesic.
     const TraceCounters counters = row.renderer->trace_counters();
-    const double paths = double(spp) * row.scene.render.width * row.scene.render.height;
+    const double paths = paths_of(row.scene, spp);
     const double segments = double(counters.traced_rays);
     const double geodesics = std::max(segments - double(counters.crossed_faces), 1.0);
     const auto [low, high] = std::minmax_element(row.ratios.begin(), row.ratios.end());
