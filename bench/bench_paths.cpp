@@ -92,6 +92,7 @@ int quotient_table(std::vector<std::string> scenes, const std::string& device, i
           "figure-eight-knot", "whitehead-link"})
       scenes.push_back(dir + name + ".json");
   scenes.insert(scenes.begin(), dir + "cornell-box.json");
+  rounds = std::max(rounds, 1);
   VulkanContext ctx(device);
   std::printf("%u spp per run, %d paired rounds, device %s\n", spp, rounds,
               ctx.description().name.c_str());
@@ -109,13 +110,15 @@ int quotient_table(std::vector<std::string> scenes, const std::string& device, i
     rows.push_back(std::move(row));
   }
   Row& cornell = rows.front();
-  for (int round = 0; round < std::max(rounds, 1); ++round)
+  const auto paths_per_second = [spp](Row& row) {
+    return paths_of(row.scene, spp) / timed_run(*row.renderer, spp);
+  };
+  for (int round = 0; round < rounds; ++round)
     for (size_t i = 1; i < rows.size(); ++i) {
       const bool cornell_first = round % 2 == 0;
-      const double cornell_paths = paths_of(cornell.scene, spp);
-      double base = cornell_first ? cornell_paths / timed_run(*cornell.renderer, spp) : 0;
-      const double rate = paths_of(rows[i].scene, spp) / timed_run(*rows[i].renderer, spp);
-      if (!cornell_first) base = cornell_paths / timed_run(*cornell.renderer, spp);
+      const double before = cornell_first ? paths_per_second(cornell) : 0;
+      const double rate = paths_per_second(rows[i]);
+      const double base = cornell_first ? before : paths_per_second(cornell);
       cornell.rates.push_back(base);
       rows[i].rates.push_back(rate);
       rows[i].ratios.push_back(rate / base);
