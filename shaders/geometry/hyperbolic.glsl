@@ -21,7 +21,7 @@ float sinhSeries(float x) {  // |x| < 0.5
 float sinhStable(float x) { return abs(x) < 0.5 ? sinhSeries(x) : sinh(x); }
 // tanh |x| = (1 - e) / (1 + e) from e = e^-2|x| (which cannot overflow) beyond 0.5, and
 // sinh / cosh = sinh / sqrt(1 + sinh^2) from the series below: one exp where the built-ins'
-// sinh, cosh and tanh took four, and closer to the double twin (docs/benchmarks.md; no faster).
+// sinh, cosh and tanh took four, and closer to the double twin (docs/quotient-speed.md; no faster).
 float tanhStable(float x) {
   float small = sinhSeries(x), e = exp(-2.0 * abs(x));
   float large = (1.0 - e) / (1.0 + e);

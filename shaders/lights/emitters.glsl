@@ -138,7 +138,7 @@ uint chooseImages(Emitter e, vec4 x, vec4 ng, float u, uint count,
                   out uint images[MAX_LIGHT_SAMPLES], out uint branches[MAX_LIGHT_SAMPLES],
                   out float choices[MAX_LIGHT_SAMPLES]) {
   // The weights are kept from the pass that sums them for the walk (2-4 % of the Poincare
-  // sphere's time, whose 60 images each walk nearly passes over; docs/benchmarks.md).
+  // sphere's time, whose 60 images each walk nearly passes over; docs/quotient-speed.md).
   vec2 weightsOf[EMITTER_IMAGES];
   float total = 0.0;
   for (uint j = 0u; j < e.image_count; ++j) {

@@ -92,7 +92,7 @@ struct PipelineFeatures {
   // towards at most one face of a pair, and the pair's two heights differ only in the sign of
   // one dot product, so the search for the exit face (exitFace) reads half the planes and
   // divides half as often (OPPOSITE_FACES; 4-10 % of those spaces' time on lavapipe,
-  // docs/benchmarks.md). Specialised pipelines only.
+  // docs/quotient-speed.md). Specialised pipelines only.
   bool opposite_faces = false;
   // Baked constants (specialised only): loop bounds the compiler can unroll or drop.
   uint32_t point_light_count = 0, emitter_count = 0, max_crossings = 0;
@@ -101,7 +101,7 @@ struct PipelineFeatures {
   // faces, tubes, listed spheres, shapes and triangles) baked in as constants (CELL_RANGES,
   // cellRecord in integrator/chart_ray.glsl), so that the loops over them have constant
   // bounds and indices, which the compiler unrolls, loading each plane or sphere once for the
-  // SIMD group (on lavapipe 13-20 % of the one-cell quotients' CPU seconds, docs/benchmarks.md).
+  // SIMD group (on lavapipe 13-20 % of the one-cell quotients' CPU seconds, docs/quotient-speed.md).
   std::optional<GpuCell> cell_ranges;
 
   // Spheres in the acceleration structure, as boxes: unless listed beside triangles (without
