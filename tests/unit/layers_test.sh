@@ -13,11 +13,13 @@ compiles() {  # layer header
   echo "#include \"$2\"" | "$cxx" -std=c++20 -fsyntax-only -I"$build/layers/$1" \
     -x c++ - 2>"$build/layers/last.err"
 }
-# A header of each folder that includes nothing of the layers above it.
-declare -A header=([geometry]=geometry/vec.h [scene]=scene/scene.h
-                   [prepare]=render/prepare/image.h [device]=render/device/gpu_buffer.h
-                   [service]=render/service/render_service.h [jobs]=jobs/job.h
-                   [net]=net/http_response.h [cli]=cli/progress_bar.h)
+# A header of each folder that includes nothing of the layers above it, and little else: the
+# include roots are what is checked, and headers that pull in Beast or Vulkan make this check
+# 47 s of compiling instead of 13.
+declare -A header=([geometry]=geometry/vec.h [scene]=scene/text_chars.h
+                   [prepare]=render/prepare/image.h [device]=render/device/fault_injection.h
+                   [service]=render/service/render_service.h [jobs]=jobs/subprocess.h
+                   [net]=net/openapi.h [cli]=cli/progress_bar.h)
 for i in "${!layers[@]}"; do
   layer=${layers[$i]}
   [ -d "$build/layers/$layer" ] || { echo "layers: no include root for $layer" >&2; exit 1; }
