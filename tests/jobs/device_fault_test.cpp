@@ -2,7 +2,8 @@
 // device or run out of device memory for real): three sessions render, one queue submission
 // fails as a driver would report it; the session it was for gets an `error` naming the Vulkan
 // error and the close 1011, the other two keep getting frames (followed for 3 s after the
-// failure), a new session renders, and the daemon stays up. After a device loss that means a new device under the surviving sessions.
+// failure), a new session renders, and the daemon stays up. After a device loss that means a
+// new device under the surviving sessions.
 #include <algorithm>
 #include <atomic>
 #include <memory>
