@@ -19,7 +19,7 @@ struct Surface {
   uint emitter;          // index into emitters, ~0u when the surface does not emit
   float t;               // arc length along the segment that hit
   bool frontFace;        // the ray arrived on the outer (sphere) or front (triangle) side
-  bool horizon;          // a shape's point past SHAPE_HORIZON_W: no path goes on from it
+  bool horizon;          // past the float horizon (SURFACE_HORIZON_W, SHAPE_HORIZON_W)
 };
 
 Surface noSurface() {
@@ -65,7 +65,7 @@ Surface chartSurface(GeodesicRay ray, vec3 x, vec3 n, float delta, float sHit) {
 
 // The surface hit by `ray` (whose current segment produced `hit`): a triangle, a sphere, an
 // edge tube or a shape (ChartHit.kind).
-Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
+Surface hitSurface(GeodesicRay ray, ChartHit hit) {
   Surface s;
   s.hit = 1u;
   s.horizon = false;
@@ -131,6 +131,24 @@ Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
 #else
   return noSurface();  // unreachable: without triangles every hit is a box's or a tube's
 #endif
+}
+
+#if defined(GEOMETRY_HYPERBOLIC)
+// Shading at a float H3 point d from the chart's origin (the camera's frame in plain H3, the
+// cell's centre in a quotient) cancels products of size e^2d: a sphere's normal carried to the
+// origin's tangent space is off by 1e-3 rad on average at d = 6, 8e-3 at 7 (5e-2 at worst),
+// and from 8 on the normal itself comes out zero, which ends in a NaN sample (docs/numerics.md,
+// "The float horizon"). So a hit farther out than d = 7 is seen, with its emission, but no
+// path goes on from it, whatever the primitive (shapes stop earlier, at SHAPE_HORIZON_W).
+const float SURFACE_HORIZON_W = 548.317035;  // cosh 7
+#endif
+
+Surface surfaceOf(GeodesicRay ray, ChartHit hit) {
+  Surface s = hitSurface(ray, hit);
+#if defined(GEOMETRY_HYPERBOLIC)
+  s.horizon = s.horizon || !(s.position.w <= SURFACE_HORIZON_W);
+#endif
+  return s;
 }
 
 #endif
