@@ -3,8 +3,6 @@
 // out zero, a NaN sample. A hit beyond d = 7 is seen with its emission, and no path goes on
 // from it; nearer, paths go on as anywhere. A camera with a 0.005-degree view sees nothing but
 // one sphere, its every hit point the same distance out.
-#include <string>
-
 #include "geometry/model.h"
 #include "render_fixture.h"
 
@@ -14,12 +12,8 @@ namespace {
 constexpr int kViewSize = 8;
 constexpr uint32_t kViewSpp = 1024;
 
-std::string coordinates(const Vec3& v) {
-  return "[" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + "]";
-}
-
 const Vec3 kLampOffset{0, 0.6, 1.4};  // in the ball's frame: nearer the camera, above the view
-constexpr double kBallRadius = 0.6, kLampRadius = 0.3, kLampEmission = 4;
+constexpr double kBallRadius = 0.6, kBallEmission = 0.25, kLampRadius = 0.3, kLampEmission = 4;
 
 // A diffuse ball (albedo 0.5, emission 0.25) of radius 0.6 whose centre is `centre` out along
 // the view, lit by a sphere light of radius 0.3 (outside the view); the view lies inside the
@@ -27,18 +21,21 @@ constexpr double kBallRadius = 0.6, kLampRadius = 0.3, kLampEmission = 4;
 Scene far_sphere(double centre) {
   const auto k = GeometryKind::Hyperbolic;
   const Mat4 there = model::translation(k, {0, 0, -centre});
-  const std::string ball = coordinates(model::log_origin(k, there * model::origin()));
-  const std::string lamp =
-      coordinates(model::log_origin(k, there * model::exp_origin(k, kLampOffset)));
-  Scene scene = scene_from_json(R"({"geometry": "hyperbolic",
-    "camera": {"position": [0, 0, 0], "look_at": [0, 0, -1], "fov_y": 0.005},
-    "materials": {"ball": {"diffuse": 0.5, "emission": 0.25}, "lamp": {"emission": 4}},
-    "objects": [
-      {"type": "sphere", "material": "ball", "center": )" + ball + R"(, "radius": 0.6},
-      {"type": "sphere", "material": "lamp", "center": )" + lamp + R"(, "radius": 0.3}],
-    "render": {"width": 8, "height": 8, "max_depth": 2}})");
-  scene.render.width = scene.render.height = kViewSize;
-  return scene;
+  const Vec3 ball = model::log_origin(k, there * model::origin());
+  const Vec3 lamp = model::log_origin(k, there * model::exp_origin(k, kLampOffset));
+  const nlohmann::json document = {
+      {"geometry", "hyperbolic"},
+      {"camera", {{"position", {0, 0, 0}}, {"look_at", {0, 0, -1}}, {"fov_y", 0.005}}},
+      {"materials",
+       {{"ball", {{"diffuse", 0.5}, {"emission", kBallEmission}}},
+        {"lamp", {{"emission", kLampEmission}}}}},
+      {"objects",
+       {{{"type", "sphere"}, {"material", "ball"}, {"center", {ball.x, ball.y, ball.z}},
+         {"radius", kBallRadius}},
+        {{"type", "sphere"}, {"material", "lamp"}, {"center", {lamp.x, lamp.y, lamp.z}},
+         {"radius", kLampRadius}}}},
+      {"render", {{"width", kViewSize}, {"height", kViewSize}, {"max_depth", 2}}}};
+  return scene_from_json(document.dump());
 }
 
 struct FarRender {
@@ -55,13 +52,13 @@ FarRender render_far(double centre) {
               (double(kViewSize) * kViewSize * kViewSpp)};
 }
 
-// Hits 8.9 out (the float-only shading gave a zero normal at half of them, each a NaN sample):
-// every pixel is the sphere's emission, exactly, and every path is its camera ray alone.
+// Hits 8.9 out (the float-only shading gave a zero normal at a third of them, each a NaN
+// sample): every pixel is the sphere's emission, exactly, and every path is its camera ray alone.
 TEST(FloatHorizon, ASphereHitBeyondItShowsItsEmissionAndNoPathGoesOn) {
   const FarRender far = render_far(9.5);
   EXPECT_EQ(far.non_finite, 0u);
   EXPECT_EQ(far.rays_per_path, 1.0);
-  for (float value : far.image.rgb) ASSERT_EQ(value, 0.25f);
+  for (float value : far.image.rgb) ASSERT_EQ(value, float(kBallEmission));
 }
 
 // Hits 5.9 out, inside the horizon: paths go on (a shadow ray and a bounce at least), no
@@ -81,7 +78,7 @@ TEST(FloatHorizon, ASphereHitInsideItIsShadedAndLit) {
   const FarRender near = render_far(6.5);
   EXPECT_EQ(near.non_finite, 0u);
   EXPECT_GT(near.rays_per_path, 2.0);
-  EXPECT_NEAR(mean(near.image).g, 0.25 + lit, 0.02 * lit);
+  EXPECT_NEAR(mean(near.image).g, kBallEmission + lit, 0.02 * lit);
 }
 
 }  // namespace
