@@ -47,15 +47,16 @@ void considerExit(uint f, float height, float towards, GeodesicRay ray, inout fl
 }
 
 // Where the chart line leaves its convex cell: the smallest chart parameter over the faces it
-// moves towards (NO_FACE and FAR for a cell without faces). With edge tubes, the same pass over
-// the faces notes which the line comes within the tubes' reach of (noteFaceReach). With
+// moves towards (NO_FACE and FAR for a cell without faces). With edge tubes (in a space of
+// several cells: NOTES_FACE_REACH), the same pass over the faces notes which the line comes
+// within the tubes' reach of (noteFaceReach). With
 // OPPOSITE_FACES the faces come in pairs N . X = w, -N . X = w: one dot product with each of o
 // and d serves both, and the line moves towards one of them at most.
 uint exitFace(GeodesicRay ray, ChartLine line, out float sExit) {
   sExit = FAR;
   uint face = NO_FACE;
   Cell cell = cellRecord(ray.cell);
-#if defined(HAS_TUBES)
+#if defined(NOTES_FACE_REACH)
   clearFaceReach();
 #endif
 #if defined(OPPOSITE_FACES)
@@ -68,7 +69,7 @@ uint exitFace(GeodesicRay ray, ChartLine line, out float sExit) {
     bool forward = towards > 0.0;
     considerExit(forward ? f : f + 1u, forward ? height : oppositeHeight, abs(towards), ray,
                  sExit, face);
-#if defined(HAS_TUBES)
+#if defined(NOTES_FACE_REACH)
     noteFaceReach(cell, i, height, towards, sExit);
     noteFaceReach(cell, i + 1u, oppositeHeight, -towards, sExit);
 #endif
@@ -80,7 +81,7 @@ uint exitFace(GeodesicRay ray, ChartLine line, out float sExit) {
     float towards = dot(plane.xyz, line.d);
     float height = plane.w - dot(plane.xyz, line.o);  // above the face's plane, inside
     considerExit(f, height, towards, ray, sExit, face);
-#if defined(HAS_TUBES)
+#if defined(NOTES_FACE_REACH)
     noteFaceReach(cell, i, height, towards, sExit);
 #endif
   }

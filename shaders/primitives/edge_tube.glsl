@@ -9,6 +9,39 @@
 #if defined(HAS_TUBES)
 #include "geometry/capsule.glsl"
 
+#if defined(CELL_RANGES)
+// Bit i set when local face i of the cell (i < 32) comes within its tube reach of the segment
+// o + s d, s in [0, sMax]: min(h(0), h(sMax)) <= reach, h linear in s (near_faces in
+// server/render/prepare/tube_culling.h). A one-cell space's face range is baked in, so this
+// pass over every face has constant indices: each plane is loaded once for the SIMD group and
+// the loop unrolls. That costs less than noting the faces during the exit search and reading
+// back the few a line approaches, whose indices differ between lanes (a gather per plane):
+// 6-18 % of those spaces' time on lavapipe (docs/quotient-speed.md, "Edge tubes found by
+// passes of constants"). With OPPOSITE_FACES face 2k + 1 is face 2k's plane negated, so one pair
+// takes one dot product with each of o and d; the results are the same to the bit.
+uint nearFaces(Cell c, vec3 o, vec3 d, float sMax) {
+  uint near = 0u;
+#if defined(OPPOSITE_FACES)
+  for (uint i = 0u; i < min(c.face_count, 32u); i += 2u) {
+    vec4 plane = cellFaces[c.face_begin + i].plane;
+    float across = dot(plane.xyz, o), towards = dot(plane.xyz, d);
+    float beyond = plane.w - across - c.tube_reach, opposite = plane.w + across - c.tube_reach;
+    if (beyond <= 0.0 || beyond <= sMax * towards) near |= 1u << i;
+    if (opposite <= 0.0 || opposite <= sMax * -towards) near |= 2u << i;
+  }
+#else
+  for (uint i = 0u; i < min(c.face_count, 32u); ++i) {
+    vec4 plane = cellFaces[c.face_begin + i].plane;
+    float beyond = plane.w - dot(plane.xyz, o) - c.tube_reach;
+    if (beyond <= 0.0 || beyond <= sMax * dot(plane.xyz, d)) near |= 1u << i;
+  }
+#endif
+  return near;
+}
+#else
+// The tracer's pass over the faces notes their reach (exitFace).
+#define NOTES_FACE_REACH
+
 // Which of the cell's local faces (i < 32) the current chart line comes within the cell's
 // tube reach of, as the tracer's pass over the faces (exitFace) sees them: those it starts
 // near, and those it moves towards and reaches before the exit found so far, which may be
@@ -40,6 +73,7 @@ uint nearFaces(Cell c, vec3 o, vec3 d, float sMax) {
   }
   return near;
 }
+#endif
 
 // Tests tube i against o + s d, s in (0, min(sMax, hit.s)]: the nearer hit.
 void testTube(uint i, vec3 o, vec3 d, float sMax, inout ChartHit hit) {
@@ -49,14 +83,29 @@ void testTube(uint i, vec3 o, vec3 d, float sMax, inout ChartHit hit) {
 }
 
 // The nearest tube of the cell on o + s d, s in (0, sMax] (for a shadow ray any tube);
-// HIT_TUBE and the tube's index, or no hit. Only tubes both of whose faces are near are tested,
-// each found from its pair of faces without reading the others (CellFace.tube_partners). The
-// faces' reach is that noteFaceReach noted for this line.
+// HIT_TUBE and the tube's index, or no hit. Only tubes both of whose faces are near are tested:
+// in a one-cell space from the baked masks of their faces (TUBE_FACES), elsewhere each found
+// from its pair of faces without reading the others (CellFace.tube_partners).
 ChartHit nearestTube(uint cell, vec3 o, vec3 d, float sMax, bool anyHit) {
   ChartHit hit = noChartHit();
   Cell c = cellRecord(cell);
   if (c.tube_count == 0u) return hit;
   uint near = nearFaces(c, o, d, sMax);
+#if defined(TUBE_FACES)
+  // A one-cell space's tubes held by pairs of faces (at most 32), each as the mask of its two
+  // faces (PipelineFeatures::tube_faces): a loop of constants marks those with both faces
+  // near, then each marked one is tested, in the order of the pairs' loop below. A loop over
+  // the near faces' records ran a different number of times in each lane and gathered its
+  // loads: 5-23 % of those spaces' time on lavapipe, beside the pass above.
+  const uint tubeFaces[] = uint[](TUBE_FACES);
+  uint candidates = 0u;  // bit k: tube k
+  for (uint k = 0u; k < uint(tubeFaces.length()); ++k)
+    if ((near & tubeFaces[k]) == tubeFaces[k]) candidates |= 1u << k;
+  for (; candidates != 0u; candidates &= candidates - 1u) {
+    testTube(c.tube_begin + uint(findLSB(candidates)), o, d, sMax, hit);
+    if (anyHit && hit.kind != HIT_NONE) return hit;
+  }
+#else
   for (uint pending = near; pending != 0u; pending &= pending - 1u) {
     CellFace face = cellFaces[c.face_begin + uint(findLSB(pending))];
     for (uint pairs = face.tube_partners & near; pairs != 0u; pairs &= pairs - 1u) {
@@ -66,6 +115,7 @@ ChartHit nearestTube(uint cell, vec3 o, vec3 d, float sMax, bool anyHit) {
       if (anyHit && hit.kind != HIT_NONE) return hit;
     }
   }
+#endif
   for (uint i = c.tube_begin + c.always_begin; i < c.tube_begin + c.tube_count; ++i) {
     testTube(i, o, d, sMax, hit);
     if (anyHit && hit.kind != HIT_NONE) return hit;

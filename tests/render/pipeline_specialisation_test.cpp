@@ -113,6 +113,45 @@ TEST(PipelineFeatures, OneCellsRangesAreBakedIn) {
   }));
 }
 
+// A space of one cell with at most kBakedTubeFaces tubes held by pairs of faces bakes in each
+// such tube's pair as a mask of two face bits (TUBE_FACES), in the packed tubes' order; a
+// space with more, spaces without tubes and the all-features pipeline do not. (EveryBundledScene/SpecialisedPipelines.RenderAsWithAllFeatures/* hold the images: the
+// all-features pipeline finds the pairs from the face records.)
+TEST(PipelineFeatures, OneCellsTubeFacesAreBakedIn) {
+  const auto baked = [](const char* name) {
+    const Scene scene = bundled_scene(name);
+    const PackedScene packed = pack_scene(scene);
+    const PipelineFeatures f = scene_features(scene, packed);
+    const auto defines = f.defines();
+    const auto it = std::find_if(defines.begin(), defines.end(), [](const std::string& d) {
+      return d.rfind("TUBE_FACES=", 0) == 0;
+    });
+    EXPECT_EQ(it != defines.end(), !f.tube_faces.empty()) << name;
+    if (f.tube_faces.empty()) return f.tube_faces;
+    std::string listed = "TUBE_FACES=";
+    for (size_t i = 0; i < f.tube_faces.size(); ++i) {
+      const GpuTube& tube = packed.tubes.at(packed.cells.at(0).tube_begin + i);
+      EXPECT_LT(tube.face_b, 32u) << name;
+      EXPECT_EQ(f.tube_faces[i], (1u << tube.face_a) | (1u << tube.face_b)) << name << " " << i;
+      listed += std::to_string(f.tube_faces[i]) + "u,";
+    }
+    listed.pop_back();
+    EXPECT_EQ(*it, listed) << name;
+    EXPECT_EQ(f.tube_faces.size(), packed.cells.at(0).always_begin) << name;
+    return f.tube_faces;
+  };
+  // A dodecahedron's 30 edges, each on two of its 12 faces; a cube's 12 on two of its 6.
+  EXPECT_EQ(baked("mirrored-dodecahedron").size(), 30u);
+  EXPECT_EQ(baked("seifert-weber").size(), 30u);
+  EXPECT_EQ(baked("quarter-turn-space").size(), 12u);
+  // The binary octahedral space's 36 edges are past kBakedTubeFaces; an atlas of lunes, the
+  // Cornell box and the others here have no tubes.
+  for (const char* name : {"catalogue/binary-octahedral", "catalogue/lens-3-1", "cornell-box",
+                           "torus-cornell", "figure-eight-knot"})
+    EXPECT_TRUE(baked(name).empty()) << name;
+  EXPECT_TRUE(all_features(GeometryKind::Hyperbolic).tube_faces.empty());
+}
+
 // Segments test their cell's spheres one by one where each cell holds at most
 // kSphereListLength (and at most kShapeListLength shapes), in a space with faces or of one
 // cell; the acceleration structure traces the triangles beside them.

@@ -67,16 +67,34 @@ bool faces_in_opposite_pairs(const PackedScene& packed) {
   });
 }
 
-// The cell record's ranges in cellRecord's order (integrator/chart_ray.glsl).
-std::string cell_ranges_define(const GpuCell& c) {
-  std::string d = "CELL_RANGES=";
-  for (uint32_t v : {c.face_begin, c.face_count, c.tube_begin, c.tube_count, c.always_begin,
-                     c.sphere_begin, c.sphere_count, c.listed_begin, c.listed_count,
-                     c.listed_pairs, c.shape_begin, c.shape_count, c.listed_hull_pairs,
-                     c.listed_hull_lone})
-    d += std::to_string(v) + "u,";
+// NAME=v0u,v1u,...: a list of constants for a shader's array.
+std::string list_define(const char* name, const std::vector<uint32_t>& values) {
+  std::string d = std::string(name) + "=";
+  for (uint32_t v : values) d += std::to_string(v) + "u,";
   d.pop_back();
   return d;
+}
+
+// The cell record's ranges in cellRecord's order (integrator/chart_ray.glsl).
+std::string cell_ranges_define(const GpuCell& c) {
+  return list_define("CELL_RANGES",
+                     {c.face_begin, c.face_count, c.tube_begin, c.tube_count, c.always_begin,
+                      c.sphere_begin, c.sphere_count, c.listed_begin, c.listed_count,
+                      c.listed_pairs, c.shape_begin, c.shape_count, c.listed_hull_pairs,
+                      c.listed_hull_lone});
+}
+
+// The masks of the faces holding each of a one-cell space's tubes held by a pair of faces
+// (those before always_begin; tube_culling.h), or none past kBakedTubeFaces of them.
+std::vector<uint32_t> tube_face_masks(const PackedScene& packed) {
+  const GpuCell& cell = packed.cells.at(0);
+  std::vector<uint32_t> masks;
+  if (cell.always_begin > kBakedTubeFaces) return masks;
+  for (uint32_t i = 0; i < cell.always_begin; ++i) {
+    const GpuTube& tube = packed.tubes[cell.tube_begin + i];
+    masks.push_back((1u << tube.face_a) | (1u << tube.face_b));
+  }
+  return masks;
 }
 
 bool any_emitter_of_kind(const PackedScene& packed, EmitterKind kind) {
@@ -153,6 +171,8 @@ PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
       f.emitter_images = std::max(f.emitter_images, e.image_count);
   f.max_crossings = f.crossing == Crossing::None ? 0 : uint32_t(scene.manifold.max_crossings);
   if (f.single_cell) f.cell_ranges = packed.cells[0];
+  if (f.single_cell && f.tubes && f.crossing != Crossing::None)
+    f.tube_faces = tube_face_masks(packed);
   f.internal_walls = std::any_of(packed.faces.begin(), packed.faces.end(),
                                  [](const GpuCellFace& face) { return face.internal != 0; });
   f.opposite_faces = faces_in_opposite_pairs(packed);
@@ -222,6 +242,7 @@ std::vector<std::string> PipelineFeatures::defines() const {
       d.push_back("EMITTER_IMAGES=" + std::to_string(std::max(emitter_images, 1u)) + "u");
     d.push_back("MAX_CROSSINGS=" + std::to_string(max_crossings) + "u");
     if (cell_ranges) d.push_back(cell_ranges_define(*cell_ranges));
+    if (!tube_faces.empty()) d.push_back(list_define("TUBE_FACES", tube_faces));
   }
   return d;
 }

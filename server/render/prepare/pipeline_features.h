@@ -32,6 +32,9 @@ constexpr uint32_t kSphereListLength = 8;
 constexpr uint32_t kShapeListLength = 8;
 // The most triangles a cell may hold for its segments to test them one by one (triangle_list).
 constexpr uint32_t kTriangleListLength = 32;
+// The most edge tubes held by a pair of faces whose masks a one-cell space bakes in
+// (tube_faces).
+constexpr uint32_t kBakedTubeFaces = 32;
 
 struct PipelineFeatures {
   GeometryKind geometry = GeometryKind::Euclidean;
@@ -103,6 +106,13 @@ struct PipelineFeatures {
   // bounds and indices, which the compiler unrolls, loading each plane or sphere once for the
   // SIMD group (on lavapipe 13-20 % of the one-cell quotients' CPU seconds, docs/quotient-speed.md).
   std::optional<GpuCell> cell_ranges;
+  // With cell_ranges and edge tubes: for each tube that a pair of the cell's faces holds (the
+  // first always_begin, at most kBakedTubeFaces), the mask of its two faces (TUBE_FACES). A
+  // segment finds the tubes to test by comparing the faces it comes near with each mask, in a
+  // loop of constants, where reading the pairs from the face records took a loop per lane
+  // (with the near faces' pass of constants, edge_tube.glsl, 14-33 % of the one-cell
+  // quotients' CPU seconds on lavapipe, docs/quotient-speed.md). Specialised pipelines only.
+  std::vector<uint32_t> tube_faces;
 
   // Spheres in the acceleration structure, as boxes: unless listed beside triangles (without
   // triangles nothing is traversed, and their boxes keep the structure from being empty).
