@@ -115,7 +115,8 @@ TEST(PipelineFeatures, OneCellsRangesAreBakedIn) {
 
 // A space of one cell with at most kBakedTubeFaces tubes held by pairs of faces bakes in each
 // such tube's pair as a mask of two face bits (TUBE_FACES), in the packed tubes' order; a
-// space with more, spaces without tubes and the all-features pipeline do not. (EveryBundledScene/SpecialisedPipelines.RenderAsWithAllFeatures/* hold the images: the
+// space with more, spaces without tubes and the all-features pipeline do not.
+// (EveryBundledScene/SpecialisedPipelines.RenderAsWithAllFeatures/* hold the images: the
 // all-features pipeline finds the pairs from the face records.)
 TEST(PipelineFeatures, OneCellsTubeFacesAreBakedIn) {
   const auto baked = [](const char* name) {
