@@ -82,29 +82,47 @@ void testTube(uint i, vec3 o, vec3 d, float sMax, inout ChartHit hit) {
   if (s < FAR_CAPSULE) hit = ChartHit(HIT_TUBE, i, s, FAR, vec2(0.0));
 }
 
+// In nearestTube (its near, c, o, d, sMax, hit and anyHit): tests, in index order, the tubes
+// BASE + k of the baked masks FACES (at most 32) whose two faces are both near, keeping the
+// nearest hit; a shadow ray returns on its first.
+#define TEST_MARKED_TUBES(FACES, BASE)                                                        \
+  {                                                                                           \
+    const uint tubeFaces[] = uint[](FACES);                                                   \
+    uint candidates = 0u; /* bit k: tube BASE + k */                                          \
+    for (uint k = 0u; k < uint(tubeFaces.length()); ++k)                                      \
+      if ((near & tubeFaces[k]) == tubeFaces[k]) candidates |= 1u << k;                       \
+    for (; candidates != 0u; candidates &= candidates - 1u) {                                 \
+      testTube(c.tube_begin + BASE + uint(findLSB(candidates)), o, d, sMax, hit);             \
+      if (anyHit && hit.kind != HIT_NONE) return hit;                                         \
+    }                                                                                         \
+  }
+
 // The nearest tube of the cell on o + s d, s in (0, sMax] (for a shadow ray any tube);
 // HIT_TUBE and the tube's index, or no hit. Only tubes both of whose faces are near are tested:
-// in a one-cell space from the baked masks of their faces (TUBE_FACES), elsewhere each found
+// in a one-cell space from the baked masks of their faces (TUBE_FACES_k), elsewhere each found
 // from its pair of faces without reading the others (CellFace.tube_partners).
 ChartHit nearestTube(uint cell, vec3 o, vec3 d, float sMax, bool anyHit) {
   ChartHit hit = noChartHit();
   Cell c = cellRecord(cell);
   if (c.tube_count == 0u) return hit;
   uint near = nearFaces(c, o, d, sMax);
-#if defined(TUBE_FACES)
-  // A one-cell space's tubes held by pairs of faces (at most 32), each as the mask of its two
-  // faces (PipelineFeatures::tube_faces): a loop of constants marks those with both faces
-  // near, then each marked one is tested, in the order of the pairs' loop below. A loop over
-  // the near faces' records ran a different number of times in each lane and gathered its
-  // loads: 5-23 % of those spaces' time on lavapipe, beside the pass above.
-  const uint tubeFaces[] = uint[](TUBE_FACES);
-  uint candidates = 0u;  // bit k: tube k
-  for (uint k = 0u; k < uint(tubeFaces.length()); ++k)
-    if ((near & tubeFaces[k]) == tubeFaces[k]) candidates |= 1u << k;
-  for (; candidates != 0u; candidates &= candidates - 1u) {
-    testTube(c.tube_begin + uint(findLSB(candidates)), o, d, sMax, hit);
-    if (anyHit && hit.kind != HIT_NONE) return hit;
-  }
+#if defined(TUBE_FACES_0)
+  // A one-cell space's tubes held by pairs of faces (at most 128), each as the mask of its two
+  // faces (PipelineFeatures::tube_faces), 32 to a define: a loop of constants marks those with
+  // both faces near, then each marked one is tested, in the order of the pairs' loop below. A
+  // loop over the near faces' records ran a different number of times in each lane and
+  // gathered its loads: 5-23 % of those spaces' time on lavapipe, beside the pass above. (One
+  // loop over the chunks was not unrolled, and lost it all: one block each.)
+  TEST_MARKED_TUBES(TUBE_FACES_0, 0u)
+#if defined(TUBE_FACES_1)
+  TEST_MARKED_TUBES(TUBE_FACES_1, 32u)
+#endif
+#if defined(TUBE_FACES_2)
+  TEST_MARKED_TUBES(TUBE_FACES_2, 64u)
+#endif
+#if defined(TUBE_FACES_3)
+  TEST_MARKED_TUBES(TUBE_FACES_3, 96u)
+#endif
 #else
   for (uint pending = near; pending != 0u; pending &= pending - 1u) {
     CellFace face = cellFaces[c.face_begin + uint(findLSB(pending))];

@@ -242,7 +242,12 @@ std::vector<std::string> PipelineFeatures::defines() const {
       d.push_back("EMITTER_IMAGES=" + std::to_string(std::max(emitter_images, 1u)) + "u");
     d.push_back("MAX_CROSSINGS=" + std::to_string(max_crossings) + "u");
     if (cell_ranges) d.push_back(cell_ranges_define(*cell_ranges));
-    if (!tube_faces.empty()) d.push_back(list_define("TUBE_FACES", tube_faces));
+    for (size_t begin = 0; begin < tube_faces.size(); begin += 32) {
+      const size_t end = std::min(tube_faces.size(), begin + 32);
+      const std::string name = "TUBE_FACES_" + std::to_string(begin / 32);
+      d.push_back(list_define(name.c_str(), std::vector<uint32_t>(tube_faces.begin() + begin,
+                                                                   tube_faces.begin() + end)));
+    }
   }
   return d;
 }
