@@ -129,7 +129,8 @@ TEST(PipelineFeatures, OneCellsTubeFacesAreBakedIn) {
       const GpuTube& tube = packed.tubes.at(packed.cells.at(0).tube_begin + i);
       EXPECT_LT(tube.face_b, 32u) << name;
       EXPECT_EQ(f.tube_faces[i], (1u << tube.face_a) | (1u << tube.face_b)) << name << " " << i;
-      if (i % 32 == 0) expected.push_back("TUBE_FACES_" + std::to_string(i / 32) + "=");
+      if (i % kTubeFacesPerDefine == 0)
+        expected.push_back("TUBE_FACES_" + std::to_string(i / kTubeFacesPerDefine) + "=");
       expected.back() += std::to_string(f.tube_faces[i]) + "u,";
     }
     for (std::string& d : expected) d.pop_back();

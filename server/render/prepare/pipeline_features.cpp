@@ -242,9 +242,9 @@ std::vector<std::string> PipelineFeatures::defines() const {
       d.push_back("EMITTER_IMAGES=" + std::to_string(std::max(emitter_images, 1u)) + "u");
     d.push_back("MAX_CROSSINGS=" + std::to_string(max_crossings) + "u");
     if (cell_ranges) d.push_back(cell_ranges_define(*cell_ranges));
-    for (size_t begin = 0; begin < tube_faces.size(); begin += 32) {
-      const size_t end = std::min(tube_faces.size(), begin + 32);
-      const std::string name = "TUBE_FACES_" + std::to_string(begin / 32);
+    for (size_t begin = 0; begin < tube_faces.size(); begin += kTubeFacesPerDefine) {
+      const size_t end = std::min<size_t>(tube_faces.size(), begin + kTubeFacesPerDefine);
+      const std::string name = "TUBE_FACES_" + std::to_string(begin / kTubeFacesPerDefine);
       d.push_back(list_define(name.c_str(), std::vector<uint32_t>(tube_faces.begin() + begin,
                                                                    tube_faces.begin() + end)));
     }

@@ -32,9 +32,11 @@ constexpr uint32_t kSphereListLength = 8;
 constexpr uint32_t kShapeListLength = 8;
 // The most triangles a cell may hold for its segments to test them one by one (triangle_list).
 constexpr uint32_t kTriangleListLength = 32;
+// The tube masks in one define (TUBE_FACES_k), an unrolled block of nearestTube's each.
+constexpr uint32_t kTubeFacesPerDefine = 32;
 // The most edge tubes held by a pair of faces whose masks a one-cell space bakes in
-// (tube_faces), as up to four defines of 32 (TUBE_FACES_0 ... TUBE_FACES_3).
-constexpr uint32_t kBakedTubeFaces = 128;
+// (tube_faces): as many defines as nearestTube has blocks (TUBE_FACES_0 ... TUBE_FACES_3).
+constexpr uint32_t kBakedTubeFaces = 4 * kTubeFacesPerDefine;
 
 struct PipelineFeatures {
   GeometryKind geometry = GeometryKind::Euclidean;
@@ -108,11 +110,11 @@ struct PipelineFeatures {
   std::optional<GpuCell> cell_ranges;
   // With cell_ranges and edge tubes: for each tube that a pair of the cell's faces holds (the
   // first always_begin, at most kBakedTubeFaces), the mask of its two faces (TUBE_FACES_k
-  // holds tubes 32 k to 32 k + 31). A
-  // segment finds the tubes to test by comparing the faces it comes near with each mask, in a
-  // loop of constants, where reading the pairs from the face records took a loop per lane
-  // (with the near faces' pass of constants, edge_tube.glsl, 14-33 % of the one-cell
-  // quotients' CPU seconds on lavapipe, docs/quotient-speed.md). Specialised pipelines only.
+  // holds kTubeFacesPerDefine of them from k times that). A segment finds the tubes to test by
+  // comparing the faces it comes near with each mask, in a loop of constants, where reading
+  // the pairs from the face records took a loop per lane (with the near faces' pass of
+  // constants, edge_tube.glsl, 14-33 % of the one-cell quotients' CPU seconds on lavapipe,
+  // docs/quotient-speed.md). Specialised pipelines only.
   std::vector<uint32_t> tube_faces;
 
   // Spheres in the acceleration structure, as boxes: unless listed beside triangles (without
