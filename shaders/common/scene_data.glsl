@@ -65,6 +65,15 @@ layout(set = 0, binding = BINDING_CELLS, std430) readonly buffer Cells { Cell ce
 #if defined(CELL_CROSSING)
 layout(set = 0, binding = BINDING_CELL_FACES, std430)
     readonly buffer CellFaces { CellFace cellFaces[]; };
+// Face f's plane, for the passes over every face of a cell, whose indices are constants once
+// unrolled: in a one-cell space baked in (FACE_PLANES, pipeline_features.h face_planes). Not
+// for an index that differs between lanes: a constant array read so goes lane by lane.
+#if defined(FACE_PLANES)
+const vec4 facePlanes[] = vec4[](FACE_PLANES);
+vec4 facePlane(uint f) { return facePlanes[f]; }
+#else
+vec4 facePlane(uint f) { return cellFaces[f].plane; }
+#endif
 #endif
 #if defined(HAS_TUBES)
 layout(set = 0, binding = BINDING_TUBES, std430) readonly buffer Tubes { Tube tubes[]; };

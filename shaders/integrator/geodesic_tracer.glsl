@@ -62,7 +62,7 @@ uint exitFace(GeodesicRay ray, ChartLine line, out float sExit) {
 #if defined(OPPOSITE_FACES)
   for (uint i = 0u; i < cell.face_count; i += 2u) {
     uint f = cell.face_begin + i;
-    vec4 plane = cellFaces[f].plane;
+    vec4 plane = facePlane(f);
     float towards = dot(plane.xyz, line.d), across = dot(plane.xyz, line.o);
     float height = plane.w - across, oppositeHeight = plane.w + across;
     // Chosen by selects, not branches: SIMD lanes would run both branches' divisions.
@@ -77,7 +77,7 @@ uint exitFace(GeodesicRay ray, ChartLine line, out float sExit) {
 #else
   for (uint i = 0u; i < cell.face_count; ++i) {
     uint f = cell.face_begin + i;
-    vec4 plane = cellFaces[f].plane;
+    vec4 plane = facePlane(f);
     float towards = dot(plane.xyz, line.d);
     float height = plane.w - dot(plane.xyz, line.o);  // above the face's plane, inside
     considerExit(f, height, towards, ray, sExit, face);

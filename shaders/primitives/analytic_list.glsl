@@ -31,7 +31,16 @@ ChartHit nearestListedAnalytic(uint cell, vec4 p, vec4 v, float sMax, bool anyHi
     if (i < LISTED_SPHERES(c)) {
 #if defined(SPHERE_LIST)
       SphereRef ref = sphereRefs[c.sphere_begin + i];
+#if defined(LISTED_SPHERE_DATA)
+      // A one-cell space's, baked in (pipeline_features.h listed_spheres): at the unrolled
+      // loop's constant index, a test of constants.
+      const vec4 listedSpheres[] = vec4[](LISTED_SPHERE_DATA);
+      if (sphereAt(cellChartIsometry(cell) * listedSpheres[2u * i], listedSpheres[2u * i + 1u].x,
+                   p, v, 0.0, min(sMax, best.s), s, t))
+        kind = HIT_SPHERE;
+#else
       if (sphereCandidate(ref, p, v, 0.0, min(sMax, best.s), s, t)) kind = HIT_SPHERE;
+#endif
       index = ref.sphere;
 #endif
     } else {

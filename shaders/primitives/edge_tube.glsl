@@ -23,7 +23,7 @@ uint nearFaces(Cell c, vec3 o, vec3 d, float sMax) {
   uint near = 0u;
 #if defined(OPPOSITE_FACES)
   for (uint i = 0u; i < min(c.face_count, 32u); i += 2u) {
-    vec4 plane = cellFaces[c.face_begin + i].plane;
+    vec4 plane = facePlane(c.face_begin + i);
     float across = dot(plane.xyz, o), towards = dot(plane.xyz, d);
     float beyond = plane.w - across - c.tube_reach, opposite = plane.w + across - c.tube_reach;
     if (beyond <= 0.0 || beyond <= sMax * towards) near |= 1u << i;
@@ -31,7 +31,7 @@ uint nearFaces(Cell c, vec3 o, vec3 d, float sMax) {
   }
 #else
   for (uint i = 0u; i < min(c.face_count, 32u); ++i) {
-    vec4 plane = cellFaces[c.face_begin + i].plane;
+    vec4 plane = facePlane(c.face_begin + i);
     float beyond = plane.w - dot(plane.xyz, o) - c.tube_reach;
     if (beyond <= 0.0 || beyond <= sMax * dot(plane.xyz, d)) near |= 1u << i;
   }

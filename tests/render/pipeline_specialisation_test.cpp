@@ -3,6 +3,8 @@
 // of the shaders, their images against the all-features pipeline's, and the pipeline cache.
 #include <algorithm>
 #include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -153,6 +155,76 @@ TEST(PipelineFeatures, OneCellsTubeFacesAreBakedIn) {
                            "figure-eight-knot"})
     EXPECT_EQ(baked(name), 0u) << name;
   EXPECT_TRUE(all_features(GeometryKind::Hyperbolic).tube_faces.empty());
+}
+
+// The floats of the define `name` (NAME=vec4(x,y,z,w),...) as glslang reads them (each literal
+// to double, then to float), grouped by four; none when the define is absent.
+std::vector<Float4> baked_vec4s(const std::vector<std::string>& defines, const std::string& name) {
+  std::vector<Float4> values;
+  for (const std::string& d : defines) {
+    if (d.rfind(name + "=", 0) != 0) continue;
+    const char* at = d.c_str() + name.size() + 1;
+    while (*at) {
+      EXPECT_EQ(std::string(at, 5), "vec4(") << name;
+      at += 5;
+      Float4 v;
+      for (float& x : v) {
+        char* end;
+        x = float(std::strtod(at, &end));
+        EXPECT_NE(std::string(at, size_t(end - at)).find_first_of(".e"), std::string::npos)
+            << name << ": a float literal";
+        at = end + 1;  // past ',' or ')'
+      }
+      values.push_back(v);
+      if (*at == ',') ++at;
+    }
+  }
+  return values;
+}
+
+// Bit for bit, the sign of zero too.
+bool same_bits(const std::vector<Float4>& a, const std::vector<Float4>& b) {
+  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Float4)) == 0;
+}
+
+// A space of one cell bakes in its face planes (FACE_PLANES) and its listed spheres' centres
+// and radii (LISTED_SPHERE_DATA), the floats exactly as packed; an atlas of cells and the
+// all-features pipeline bake neither. (EveryBundledScene/SpecialisedPipelines.
+// RenderAsWithAllFeatures/* hold the images: the all-features pipeline reads the records.)
+TEST(PipelineFeatures, OneCellsPlanesAndListedSpheresAreBakedIn) {
+  const auto check = [](const char* name, size_t faces, size_t spheres) {
+    const Scene scene = bundled_scene(name);
+    const PackedScene packed = pack_scene(scene);
+    const auto defines = scene_features(scene, packed).defines();
+    std::vector<Float4> planes, listed;
+    if (faces > 0)
+      for (const GpuCellFace& face : packed.faces)
+        planes.push_back({face.plane[0], face.plane[1], face.plane[2], face.plane[3]});
+    const GpuCell& cell = packed.cells.at(0);
+    EXPECT_EQ(cell.sphere_count, spheres) << name;
+    for (uint32_t i = 0; i < cell.sphere_count; ++i) {
+      const GpuSphereRef& ref = packed.sphere_refs.at(cell.sphere_begin + i);
+      const GpuSphere& sphere = packed.spheres.at(ref.sphere);
+      listed.push_back({sphere.center[0], sphere.center[1], sphere.center[2], sphere.center[3]});
+      listed.push_back({sphere.radius, 0, 0, 0});
+    }
+    EXPECT_EQ(planes.size(), faces) << name;
+    EXPECT_TRUE(same_bits(baked_vec4s(defines, "FACE_PLANES"), planes)) << name;
+    EXPECT_TRUE(same_bits(baked_vec4s(defines, "LISTED_SPHERE_DATA"), listed)) << name;
+  };
+  check("mirrored-dodecahedron", 12, 3);  // its planes hold zeros of both signs
+  check("seifert-weber", 12, 1);
+  check("quarter-turn-space", 6, 2);
+  check("cornell-box", 0, 3);  // no faces: its spheres alone
+  check("furnace", 0, 0);      // no spheres listed
+  for (const char* name : {"spherical-spheres", "catalogue/lens-3-1"}) {
+    const Scene scene = bundled_scene(name);
+    const auto defines = scene_features(scene, pack_scene(scene)).defines();
+    EXPECT_TRUE(baked_vec4s(defines, "FACE_PLANES").empty()) << name;
+    EXPECT_TRUE(baked_vec4s(defines, "LISTED_SPHERE_DATA").empty()) << name;
+  }
+  const auto all = all_features(GeometryKind::Hyperbolic);
+  EXPECT_TRUE(all.face_planes.empty() && all.listed_spheres.empty());
 }
 
 // Segments test their cell's spheres one by one where each cell holds at most

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "render/prepare/scene_bindings.h"
 
@@ -75,6 +76,24 @@ std::string list_define(const char* name, const std::vector<uint32_t>& values) {
   return d;
 }
 
+// NAME=vec4(x,y,z,w),...: a list of vec4 constants, each float written as a float literal
+// with the digits that give it back exactly (its sign too: -0.0, not the integer -0).
+std::string vec4_list_define(const char* name, const std::vector<Float4>& values) {
+  std::string d = std::string(name) + "=";
+  char number[32];
+  for (const Float4& v : values) {
+    d += "vec4(";
+    for (size_t k = 0; k < v.size(); ++k) {
+      std::snprintf(number, sizeof number, "%.17g", double(v[k]));
+      d += number;
+      if (std::string(number).find_first_of(".e") == std::string::npos) d += ".0";
+      d += k + 1 < v.size() ? "," : "),";
+    }
+  }
+  d.pop_back();
+  return d;
+}
+
 // The cell record's ranges in cellRecord's order (integrator/chart_ray.glsl).
 std::string cell_ranges_define(const GpuCell& c) {
   return list_define("CELL_RANGES",
@@ -95,6 +114,27 @@ std::vector<uint32_t> tube_face_masks(const PackedScene& packed) {
     masks.push_back((1u << tube.face_a) | (1u << tube.face_b));
   }
   return masks;
+}
+
+// A one-cell space's face planes in its order (all the packed faces are its own).
+std::vector<Float4> face_planes_of(const PackedScene& packed) {
+  std::vector<Float4> planes;
+  for (const GpuCellFace& face : packed.faces)
+    planes.push_back({face.plane[0], face.plane[1], face.plane[2], face.plane[3]});
+  return planes;
+}
+
+// A one-cell space's listed spheres in its list's order: centre, then (radius, 0, 0, 0).
+std::vector<Float4> listed_spheres_of(const PackedScene& packed) {
+  const GpuCell& cell = packed.cells.at(0);
+  std::vector<Float4> spheres;
+  for (uint32_t i = 0; i < cell.sphere_count; ++i) {
+    const GpuSphereRef& ref = packed.sphere_refs.at(cell.sphere_begin + i);
+    const GpuSphere& sphere = packed.spheres.at(ref.sphere);
+    spheres.push_back({sphere.center[0], sphere.center[1], sphere.center[2], sphere.center[3]});
+    spheres.push_back({sphere.radius, 0.0f, 0.0f, 0.0f});
+  }
+  return spheres;
 }
 
 bool any_emitter_of_kind(const PackedScene& packed, EmitterKind kind) {
@@ -173,6 +213,8 @@ PipelineFeatures scene_features(const Scene& scene, const PackedScene& packed) {
   if (f.single_cell) f.cell_ranges = packed.cells[0];
   if (f.single_cell && f.tubes && f.crossing != Crossing::None)
     f.tube_faces = tube_face_masks(packed);
+  if (f.single_cell && f.crossing != Crossing::None) f.face_planes = face_planes_of(packed);
+  if (f.single_cell && f.sphere_list) f.listed_spheres = listed_spheres_of(packed);
   f.internal_walls = std::any_of(packed.faces.begin(), packed.faces.end(),
                                  [](const GpuCellFace& face) { return face.internal != 0; });
   f.opposite_faces = faces_in_opposite_pairs(packed);
@@ -242,6 +284,9 @@ std::vector<std::string> PipelineFeatures::defines() const {
       d.push_back("EMITTER_IMAGES=" + std::to_string(std::max(emitter_images, 1u)) + "u");
     d.push_back("MAX_CROSSINGS=" + std::to_string(max_crossings) + "u");
     if (cell_ranges) d.push_back(cell_ranges_define(*cell_ranges));
+    if (!face_planes.empty()) d.push_back(vec4_list_define("FACE_PLANES", face_planes));
+    if (!listed_spheres.empty())
+      d.push_back(vec4_list_define("LISTED_SPHERE_DATA", listed_spheres));
     for (size_t begin = 0; begin < tube_faces.size(); begin += kTubeFacesPerDefine) {
       const size_t end = std::min<size_t>(tube_faces.size(), begin + kTubeFacesPerDefine);
       const std::string name = "TUBE_FACES_" + std::to_string(begin / kTubeFacesPerDefine);

@@ -116,6 +116,16 @@ struct PipelineFeatures {
   // constants, edge_tube.glsl, 14-33 % of the one-cell quotients' CPU seconds on lavapipe,
   // docs/quotient-speed.md). Specialised pipelines only.
   std::vector<uint32_t> tube_faces;
+  // With cell_ranges and faces: the plane of each of the cell's faces (FACE_PLANES, as vec4
+  // constants in its order), read by the passes over every face (the exit search, the tubes'
+  // near faces) at their constant indices instead of loaded from the face records (lavapipe:
+  // 2-3 % of the one-cell quotients' CPU seconds, docs/quotient-speed.md). Specialised only.
+  std::vector<Float4> face_planes;
+  // With cell_ranges and listed spheres: each listed sphere's model centre and, in the next
+  // entry's x, its radius (LISTED_SPHERE_DATA, in the cell's list order), so that its test works
+  // on constants, its radius's sinh and cosh folded by the compiler (lavapipe: 3-17 % of the
+  // scenes' CPU seconds where spheres are listed in one cell). Specialised only.
+  std::vector<Float4> listed_spheres;
 
   // Spheres in the acceleration structure, as boxes: unless listed beside triangles (without
   // triangles nothing is traversed, and their boxes keep the structure from being empty).
