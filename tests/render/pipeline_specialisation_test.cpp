@@ -2,6 +2,8 @@
 // scene by scene and feature by feature. specialised_shaders_test.cpp holds what they leave out
 // of the shaders, their images against the all-features pipeline's, and the pipeline cache.
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
@@ -184,7 +186,10 @@ std::vector<Float4> baked_vec4s(const std::vector<std::string>& defines, const s
 
 // Bit for bit, the sign of zero too.
 bool same_bits(const std::vector<Float4>& a, const std::vector<Float4>& b) {
-  return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(Float4)) == 0;
+  using Bits = std::array<uint32_t, 4>;
+  return std::ranges::equal(a, b, [](const Float4& x, const Float4& y) {
+    return std::bit_cast<Bits>(x) == std::bit_cast<Bits>(y);
+  });
 }
 
 // A space of one cell bakes in its face planes (FACE_PLANES) and its listed spheres' centres
