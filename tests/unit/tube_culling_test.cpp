@@ -106,6 +106,37 @@ TEST_P(TubeCulling, EveryTubeHasItsTwoFacesAndNoMetTubeIsCulled) {
   EXPECT_LT(tested / kSegments, 0.25 * double(packed.tubes.size()));
 }
 
+// A segment from the middle of one face to the middle of a face beside it passes their common
+// edge far away: the first face is within reach only at its start, the second only at its end,
+// so no face counts as near and no tube is tested. Started at the middle of the edge instead,
+// both faces are within reach at its start, and the tube on their edge is tested.
+TEST_P(TubeCulling, ASegmentFarFromTheEdgesTestsNoTube) {
+  const Scene scene = load_scene_file(std::filesystem::path(GEODESIC_SOURCE_DIR) / GetParam());
+  const std::vector<Cell> cells = build_cells(scene);
+  const Cell& cell = cells.at(0);
+  const PackedScene packed = pack_scene(scene);
+  const double reach = packed.cells[0].tube_reach;
+  const Polyhedron& domain = scene.manifold.domain;
+  const auto middle = [&](uint32_t f) {  // the mean of face f's vertices
+    Vec3 sum;
+    int count = 0;
+    for (const Vec3& v : domain.vertices)
+      if (std::abs(dot(cell.faces[f].normal, v) - cell.faces[f].delta) < 1e-9) {
+        sum += v;
+        ++count;
+      }
+    EXPECT_GE(count, 3) << "face " << f;
+    return sum / double(count);
+  };
+  for (const GpuTube& t : packed.tubes) {
+    const Vec3 a = middle(t.face_a), b = middle(t.face_b);
+    EXPECT_EQ(near_faces(cell, a, b - a, 1.0, reach), 0u) << t.face_a << ", " << t.face_b;
+    const Vec3 edge = 0.5 * (Vec3{t.a[0], t.a[1], t.a[2]} + Vec3{t.b[0], t.b[1], t.b[2]});
+    const uint32_t pair = (1u << t.face_a) | (1u << t.face_b);
+    EXPECT_EQ(near_faces(cell, edge, b - edge, 1.0, reach) & pair, pair);
+  }
+}
+
 // Three tubes on one edge (a document that asks for the domain's edges three times): the
 // lookup finds one per pair of faces, so the others on each edge go to the tubes always
 // tested, and every tube is still tested where it can be met.

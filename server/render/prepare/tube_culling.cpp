@@ -8,12 +8,16 @@ namespace geodesic {
 
 uint32_t near_faces(const Cell& cell, const Vec3& o, const Vec3& d, double s_max, double reach) {
   uint32_t near = 0;
+  double lo = 0, hi = s_max;  // where every near face is within reach at once
   for (size_t i = 0; i < std::min<size_t>(cell.faces.size(), 32); ++i) {
     const CellFace& f = cell.faces[i];
-    const double h0 = f.delta - dot(f.normal, o), h1 = f.delta - dot(f.normal, o + s_max * d);
-    if (std::min(h0, h1) <= reach) near |= 1u << i;
+    const double beyond = f.delta - dot(f.normal, o) - reach, towards = dot(f.normal, d);
+    if (beyond > 0 && beyond > s_max * towards) continue;
+    near |= 1u << i;
+    if (towards > 0) lo = std::max(lo, beyond / towards);
+    if (towards < 0) hi = std::min(hi, beyond / towards);
   }
-  return near;
+  return std::popcount(near) < 3 && lo > hi + near_span_slack(s_max) ? 0 : near;
 }
 
 std::pair<uint32_t, uint32_t> faces_holding(const Cell& cell, const Vec3& a, const Vec3& b) {

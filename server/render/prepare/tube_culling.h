@@ -4,9 +4,12 @@
 // radius of both planes. Along the segment o + s d, s in [0, s_max], a face's distance
 // h(s) = delta - n . (o + s d) is linear, smallest at an end: a face is near when that smallest
 // value is at most the cell's largest tube radius, and a tube can be met only when both of its
-// faces are near. A segment that enters by one face and leaves by another, far from the other
-// edges, so tests one tube or none instead of all of them, found from the pair of faces without
-// reading the cell's other tubes.
+// faces are near, and only where both are near at once: each near face is near over one
+// interval of s, and when the near faces are at most two and their intervals do not meet (past
+// near_span_slack), none is counted near. A segment that enters by one face and leaves by
+// another, far from the edges, is near the first only at its start and the second only at its
+// end, so tests no tube instead of all of them; one that passes an edge tests the tubes found
+// from its pairs of near faces without reading the cell's other tubes.
 #pragma once
 
 #include <cstdint>
@@ -21,7 +24,12 @@ namespace geodesic {
 // GpuTube's face index when no two of the cell's first 32 faces hold the axis: always tested.
 constexpr uint32_t kAlwaysTest = ~0u;
 
-// Bit i set when the cell's local face i (i < 32) is near the segment.
+// The margin by which the near faces' intervals must miss each other before none is counted
+// near: far beyond float round-off, a ten-thousandth of the segment and a millionth of the chart.
+constexpr double near_span_slack(double s_max) { return 1e-4 * s_max + 1e-6; }
+
+// Bit i set when the cell's local face i (i < 32) is near the segment (none when at most two
+// are, never near at once).
 uint32_t near_faces(const Cell& cell, const Vec3& o, const Vec3& d, double s_max, double reach);
 
 // Two local faces of the cell whose planes hold the chart segment [a, b] (to within 1e-7 of
