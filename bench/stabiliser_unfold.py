@@ -120,7 +120,7 @@ def main():
     gen_path, scene_path, out = sys.argv[1:4]
     reflections = read_gen(gen_path)
     scene = json.load(open(scene_path))
-    order, three, vertex = largest_vertex(reflections)
+    _, three, vertex = largest_vertex(reflections)
     stabiliser = closure([reflections[i] for i in three])
     (missing,) = [i for i in range(len(reflections)) if i not in three]
     faces = []
@@ -142,9 +142,9 @@ def main():
         sys.exit("stabiliser_unfold.py: copies only spheres (and drops domain edges)")
     plain["camera"] = {"pose": IDENTITY, "fov_y": scene["camera"]["fov_y"]}
     unfolded = json.loads(json.dumps(plain))
-    unfolded["manifold"] = {"type": "generators",
-                            "matrices": [mul(mul(to_vertex, f), from_vertex) for f in faces],
-                            "max_crossings": scene["manifold"].get("max_crossings", 24)}
+    unfolded["manifold"] = dict(plain["manifold"], type="generators",
+                                matrices=[mul(mul(to_vertex, f), from_vertex) for f in faces])
+    del unfolded["manifold"]["file"]
     unfolded["camera"]["pose"] = to_vertex
     unfolded["objects"] = [dict(o, center=moved(o["center"], mul(to_vertex, s)))
                            for o in plain["objects"] for s in stabiliser]
