@@ -19,9 +19,10 @@ table against their thresholds (docs/benchmarks.md, "Quotient spaces against the
 
 Each figure is the tool's own printed one: this script runs the three tools one after the other
 (on a 2-core lavapipe machine about 20 minutes at the default three rounds with the
-convergence references cached in BUILD/bench-cache, 30 without) and reads what they print. The scenes are those geodesic_bench
---quotients measures, so that part always runs; --skip leaves out the others. --device goes to
-the two binaries that take it; bench/convergence.sh renders on the default device.
+convergence references cached in BUILD/bench-cache, 30 without) and reads what they print.
+The scenes are those geodesic_bench --quotients measures, so that part always runs; --skip
+leaves out the others. --device goes to the two binaries that take it; bench/convergence.sh
+renders on the default device.
 """
 import argparse
 import os
@@ -96,19 +97,20 @@ def time_to_one_percent(build, names, seconds, ref_seconds, rounds):
                    "--ref-time", str(ref_seconds)] + [scene_file(n) for n in order]
         rows = []
         for line in run(command).splitlines():
-            # scene size ref spp slope (cpu) (spp) t(5%) t(1%) ...; a time is "X s" or "X s (extrap.)"
+            # scene size ref spp slope (cpu) (spp) t(5%) t(1%) ...;
+            # a time is "X s" or "X s (extrap.)"
             m = re.match(r"(\S+)\s+\d+x\d+\s+\d+\s+\d+(?:\s+\S+){3}\s+"
                          r"(?:[\d.e+-]+ s(?: \(extrap\.\))?)\s+([\d.e+-]+) s( \(extrap\.\))?", line)
             if m:
                 rows.append((m.group(1), float(m.group(2)), bool(m.group(3))))
         if [row[0] for row in rows] != order:
             sys.exit("quotient_targets: bench/convergence.sh printed other rows than its scenes")
-        for i in range(0, len(rows), 2):
-            times = {name: (t, extrapolated) for name, t, extrapolated in rows[i:i + 2]}
-            scene = others[i // 2]
-            for name, value in times.items():
-                seen[name].append(value)
-            ratios[scene].append(times[scene][0] / times["cornell-box"][0])
+        times = {}
+        for name, t, extrapolated in rows:
+            seen[name].append((t, extrapolated))
+            times.setdefault(name, []).append(t)
+        for scene, cornell in zip(others, times["cornell-box"]):  # the k-th pair's Cornell run
+            ratios[scene].append(times[scene][0] / cornell)
     result = {}
     for name in names:
         if not seen[name]:
