@@ -8,49 +8,31 @@
 // the watertight triangle test closes by construction.
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <vector>
 
 #include "geometry/model.h"
 #include "geometry/parallelogram.h"
-#include "geometry_probe.h"
+#include "flat_piece_probe.h"
 
 namespace geodesic::test {
 namespace {
 
-struct Parallelogram {
-  Vec3 a, b, c;  // corners a, a + u, a + u + v (and a + v)
-};
-
-void store(ProbeCase& c, const Parallelogram& p, const Vec3& o, const Vec3& d, double s_max) {
-  c.triangle_a = f4(p.a, s_max);
-  c.triangle_b = f4(p.b, 0);
-  c.triangle_c = f4(p.c, 0);
-  c.chart = f4(o, 0);
-  c.normal = f4(d, 0);
-}
+using Parallelogram = Corners;  // corners a, a + u, a + u + v (and a + v)
 
 // How far inside (> 0) or outside the line passes, in units of the sides: the smallest of
-// alpha, 1 - alpha, beta, 1 - beta on the plane, from the float inputs.
-double margin(const ProbeCase& c) {
-  const Vec3 a = v3(c.triangle_a), b = v3(c.triangle_b), cc = v3(c.triangle_c);
-  const Vec3 o = v3(c.chart), d = v3(c.normal), u = b - a, v = cc - b, n = cross(u, v);
-  const double denom = dot(n, d);
+// alpha, 1 - alpha, beta, 1 - beta on the plane.
+double margin(const CornerCase& k) {
+  const Vec3 a = k.piece.a, u = k.piece.b - a, v = k.piece.c - k.piece.b, n = cross(u, v);
+  const double denom = dot(n, k.d);
   if (denom == 0) return -1;
-  const Vec3 x = o + (dot(n, a - o) / denom) * d - a;
+  const Vec3 x = k.o + (dot(n, a - k.o) / denom) * k.d - a;
   const double alpha = dot(cross(x, v), n) / dot(n, n), beta = dot(cross(u, x), n) / dot(n, n);
   return std::min({alpha, 1 - alpha, beta, 1 - beta});
 }
 
 TEST(ParallelogramProbe, FloatIntersectionMatchesTheDoubleTwin) {
-  ProbeCaseMaker maker(GeometryKind::Euclidean, 4133);
-  ModelSampler& sample = maker.sample();
-  std::vector<ProbeCase> cases;
-  for (int i = 0; i < 8000; ++i) {
-    ProbeCase c = maker.make();
-    const Vec3 shift = i % 4 == 3 ? sample.uniform(100, 1000) * sample.unit3() : Vec3{};
-    const double size = sample.uniform(0.05, 2);
+  const auto aim = [](ModelSampler& sample, int i, const Vec3& shift, double size) {
     // Sides of 0.2 to 1 of the size, at 12 degrees or more to each other (no slivers, whose
     // alpha or beta a float ulp of the chart moves by much).
     const Vec3 a = shift + size * sample.ball(1);
@@ -59,32 +41,22 @@ TEST(ParallelogramProbe, FloatIntersectionMatchesTheDoubleTwin) {
       u = size * sample.uniform(0.2, 1) * sample.unit3();
       v = size * sample.uniform(0.2, 1) * sample.unit3();
     } while (length(cross(u, v)) < 0.2 * length(u) * length(v));
-    const Parallelogram p{a, a + u, a + u + v};
-    const Vec3 n = normalize(cross(u, v));
     double alpha = sample.uniform(0, 1), beta = sample.uniform(0, 1);
     if (i % 4 == 1) {  // past an edge, by up to half the side
       const double out = sample.uniform(0.001, 0.5);
       if (i / 4 % 2 == 0) alpha = i / 8 % 2 ? -out : 1 + out;
       else beta = i / 8 % 2 ? -out : 1 + out;
     }
-    const Vec3 target = a + alpha * u + beta * v;
-    const AimedLine line = line_at(sample, target, n, size, i);
-    store(c, p, line.o, line.d, line.s_max);
-    cases.push_back(c);
-  }
-  const auto results = run_probe(GeometryKind::Euclidean, cases);
-  std::vector<TwinCase> compared;
-  for (size_t i = 0; i < cases.size(); ++i) {
-    const ProbeCase& c = cases[i];
-    const Vec3 a = v3(c.triangle_a), b = v3(c.triangle_b), cc = v3(c.triangle_c);
-    const Vec3 o = v3(c.chart), d = v3(c.normal);
-    const auto twin = intersect_chart_parallelogram(o, d, a, b, cc, 0, c.triangle_a[3]);
-    compared.push_back(
-        {twin ? std::optional(std::array{twin->s, twin->alpha, twin->beta}) : std::nullopt,
-         results[i].parallelogram, margin(c),
-         std::abs(dot(normalize(d), normalize(cross(b - a, cc - b)))), length(o)});
-  }
-  expect_twin_agrees(compared, "parallelogram", "alpha and beta");
+    return AimedPiece{{a, a + u, a + u + v}, a + alpha * u + beta * v};
+  };
+  const auto twin = [](const CornerCase& k) -> std::optional<std::array<double, 3>> {
+    const Parallelogram& p = k.piece;
+    const auto hit = intersect_chart_parallelogram(k.o, k.d, p.a, p.b, p.c, 0, k.s_max);
+    if (!hit) return std::nullopt;
+    return std::array{hit->s, hit->alpha, hit->beta};
+  };
+  expect_pieces_agree_with_twin(4133, aim, &ProbeResult::parallelogram, twin, margin,
+                                "parallelogram", "alpha and beta");
 }
 
 // Two walls of a box meeting at an edge (at a right angle, or folded 10 to 170 degrees), two
@@ -124,12 +96,7 @@ TEST(ParallelogramProbe, LinesThroughSharedEdgesAndCornersMeetAParallelogram) {
     Vec3 d = sample.unit3();
     if (i % 4 == 1) d = normalize(d + std::tan(sample.uniform(0.01, 0.1)) * normalize(x));
     const Vec3 o = target - sample.uniform(0.1, 3) * (1 + size) * d;
-    lines.push_back({cases.size(), walls.size()});
-    for (const Parallelogram& w : walls) {
-      ProbeCase c = maker.make();
-      store(c, w, o, d, kFar);
-      cases.push_back(c);
-    }
+    add_seam_line(maker, walls, o, d, cases, lines);
   }
   expect_every_line_meets_a_piece(run_probe(GeometryKind::Euclidean, cases), lines,
                                   &ProbeResult::parallelogram, "shared edges and corners");

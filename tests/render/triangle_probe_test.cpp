@@ -7,66 +7,36 @@
 // at least one of them (no light through the seams of a closed box).
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <vector>
 
-#include "geometry_probe.h"
+#include "flat_piece_probe.h"
 
 namespace geodesic::test {
 namespace {
 
 using model::intersect_chart_triangle;
-
-struct Triangle {
-  Vec3 a, b, c;
-};
-
-void store(ProbeCase& c, const Triangle& t, const Vec3& o, const Vec3& d, double s_max) {
-  c.triangle_a = f4(t.a, s_max);
-  c.triangle_b = f4(t.b, 0);
-  c.triangle_c = f4(t.c, 0);
-  c.chart = f4(o, 0);
-  c.normal = f4(d, 0);
-}
-
-// The case as the probe sees it: every input rounded to float.
-struct Seen {
-  Triangle t;
-  Vec3 o, d;
-  double s_max;
-};
-Seen read_triangle_case(const ProbeCase& c) {
-  return {{v3(c.triangle_a), v3(c.triangle_b), v3(c.triangle_c)}, v3(c.chart), v3(c.normal),
-          c.triangle_a[3]};
-}
+using Triangle = Corners;
 
 Vec3 at(const Triangle& t, double u, double v) { return (1 - u - v) * t.a + u * t.b + v * t.c; }
 
 // The line's signed barycentrics on the triangle's plane, the smallest of them scaled by the
 // triangle's size: how far inside (> 0) or outside the line passes.
-double margin(const Seen& s) {
-  const Vec3 e1 = s.t.b - s.t.a, e2 = s.t.c - s.t.a, n = cross(e1, e2);
+double margin(const CornerCase& s) {
+  const Triangle& t = s.piece;
+  const Vec3 e1 = t.b - t.a, e2 = t.c - t.a, n = cross(e1, e2);
   const double denom = dot(s.d, n);
   if (denom == 0) return -1;
-  const Vec3 x = s.o + (dot(s.t.a - s.o, n) / denom) * s.d;
+  const Vec3 x = s.o + (dot(t.a - s.o, n) / denom) * s.d;
   const double area2 = dot(n, n);
-  const double u = dot(cross(x - s.t.a, e2), n) / area2, v = dot(cross(e1, x - s.t.a), n) / area2;
+  const double u = dot(cross(x - t.a, e2), n) / area2, v = dot(cross(e1, x - t.a), n) / area2;
   return std::min({u, v, 1 - u - v});
 }
 
 TEST(TriangleProbe, FloatIntersectionMatchesTheDoubleTwin) {
-  ProbeCaseMaker maker(GeometryKind::Euclidean, 4111);  // the triangle lives in a chart
-  ModelSampler& sample = maker.sample();
-  std::vector<ProbeCase> cases;
-  for (int i = 0; i < 8000; ++i) {
-    ProbeCase c = maker.make();
-    // Every fourth case a thousand units out, as a chart of a large flat scene can be.
-    const Vec3 shift = i % 4 == 3 ? sample.uniform(100, 1000) * sample.unit3() : Vec3{};
-    const double size = sample.uniform(0.05, 2);
+  const auto aim = [](ModelSampler& sample, int i, const Vec3& shift, double size) {
     const Triangle t{shift + size * sample.ball(1), shift + size * sample.ball(1),
                      shift + size * sample.ball(1)};
-    const Vec3 n = normalize(cross(t.b - t.a, t.c - t.a));
     double u = sample.uniform(0, 1), v = sample.uniform(0, 1);
     if (u + v > 1) u = 1 - u, v = 1 - v;
     if (i % 4 == 1) {  // past an edge, by up to half the triangle
@@ -76,22 +46,16 @@ TEST(TriangleProbe, FloatIntersectionMatchesTheDoubleTwin) {
       else if (edge == 1) v = out;
       else u = 1 - v - out;
     }
-    const Vec3 target = at(t, u, v);
-    const AimedLine line = line_at(sample, target, n, size, i);
-    store(c, t, line.o, line.d, line.s_max);
-    cases.push_back(c);
-  }
-  const auto results = run_probe(GeometryKind::Euclidean, cases);
-  std::vector<TwinCase> compared;
-  for (size_t i = 0; i < cases.size(); ++i) {
-    const Seen s = read_triangle_case(cases[i]);
-    const auto twin = intersect_chart_triangle(s.o, s.d, s.t.a, s.t.b, s.t.c, 0, s.s_max);
-    const Vec3 n = normalize(cross(s.t.b - s.t.a, s.t.c - s.t.a));
-    compared.push_back({twin ? std::optional(std::array{twin->s, twin->u, twin->v}) : std::nullopt,
-                        results[i].triangle, margin(s), std::abs(dot(normalize(s.d), n)),
-                        length(s.o)});
-  }
-  expect_twin_agrees(compared, "triangle", "barycentrics");
+    return AimedPiece{t, at(t, u, v)};
+  };
+  const auto twin = [](const CornerCase& k) -> std::optional<std::array<double, 3>> {
+    const Triangle& t = k.piece;
+    const auto hit = intersect_chart_triangle(k.o, k.d, t.a, t.b, t.c, 0, k.s_max);
+    if (!hit) return std::nullopt;
+    return std::array{hit->s, hit->u, hit->v};
+  };
+  expect_pieces_agree_with_twin(4111, aim, &ProbeResult::triangle, twin, margin, "triangle",
+                                "barycentrics");
 }
 
 // Quads split along a diagonal and fans of triangles round a vertex, the lines aimed at float
@@ -128,12 +92,7 @@ TEST(TriangleProbe, LinesThroughSharedEdgesAndVerticesMeetATriangle) {
     if (i % 4 == 1) d = normalize(d - dot(d, n) * n + std::tan(sample.uniform(0.01, 0.1)) * n);
     if (std::abs(dot(d, n)) < 1e-3) d = n;
     const Vec3 o = target - sample.uniform(0.1, 3) * (1 + size) * d;
-    lines.push_back({cases.size(), triangles.size()});
-    for (const Triangle& t : triangles) {
-      ProbeCase c = maker.make();
-      store(c, t, o, d, kFar);
-      cases.push_back(c);
-    }
+    add_seam_line(maker, triangles, o, d, cases, lines);
   }
   expect_every_line_meets_a_piece(run_probe(GeometryKind::Euclidean, cases), lines,
                                   &ProbeResult::triangle, "shared edges and vertices");
