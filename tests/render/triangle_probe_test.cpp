@@ -22,12 +22,12 @@ Vec3 at(const Triangle& t, double u, double v) { return (1 - u - v) * t.a + u * 
 
 // The line's signed barycentrics on the triangle's plane, the smallest of them scaled by the
 // triangle's size: how far inside (> 0) or outside the line passes.
-double margin(const CornerCase& s) {
-  const Triangle& t = s.piece;
+double margin(const CornerCase& k) {
+  const Triangle& t = k.piece;
   const Vec3 e1 = t.b - t.a, e2 = t.c - t.a, n = cross(e1, e2);
-  const double denom = dot(s.d, n);
+  const double denom = dot(k.d, n);
   if (denom == 0) return -1;
-  const Vec3 x = s.o + (dot(t.a - s.o, n) / denom) * s.d;
+  const Vec3 x = k.o + (dot(t.a - k.o, n) / denom) * k.d;
   const double area2 = dot(n, n);
   const double u = dot(cross(x - t.a, e2), n) / area2, v = dot(cross(e1, x - t.a), n) / area2;
   return std::min({u, v, 1 - u - v});
