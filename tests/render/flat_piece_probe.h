@@ -80,28 +80,6 @@ inline void expect_twin_agrees(const std::vector<TwinCase>& cases, const char* w
   EXPECT_LT(band, 200);
 }
 
-// Lines through an edge or a vertex that pieces of a surface share (triangles, parallelograms):
-// a line's cases, one per piece, are results[first, first + count); each line must meet at
-// least one piece (field[0] < kFar), as a closed surface needs. Prints the counts under `what`.
-struct SeamLine {
-  size_t first, count;
-};
-inline void expect_every_line_meets_a_piece(const std::vector<ProbeResult>& results,
-                                            const std::vector<SeamLine>& lines,
-                                            F4 ProbeResult::*field, const char* what) {
-  int holes = 0, double_hits = 0;
-  for (size_t l = 0; l < lines.size(); ++l) {
-    int met = 0;
-    for (size_t k = 0; k < lines[l].count; ++k)
-      met += (results[lines[l].first + k].*field)[0] < 1e29f;
-    holes += met == 0;
-    double_hits += met > 1;
-    EXPECT_GT(met, 0) << "line " << l << " passes between its pieces";
-  }
-  std::printf("%s: %zu lines, %d through none, %d meeting two or more\n", what, lines.size(),
-              holes, double_hits);
-}
-
 // A flat piece given by three corners (a triangle; a parallelogram's a, a + u, a + u + v) and a
 // line o + s d up to sMax, in the case's triangle, chart and normal fields. Read back, every
 // input is rounded to float: the case as the probe sees it.
@@ -164,16 +142,44 @@ void expect_pieces_agree_with_twin(uint64_t seed, Aim aim, F4 ProbeResult::*fiel
   expect_twin_agrees(compared, what, coordinates);
 }
 
-// One line of expect_every_line_meets_a_piece: a case per piece, all on the line o + s d.
-inline void add_seam_line(ProbeCaseMaker& maker, const std::vector<Corners>& pieces,
-                          const Vec3& o, const Vec3& d, std::vector<ProbeCase>& cases,
-                          std::vector<SeamLine>& lines) {
-  lines.push_back({cases.size(), pieces.size()});
-  for (const Corners& piece : pieces) {
-    ProbeCase c = maker.make();
-    store_corners(c, {piece, o, d, kFar});
-    cases.push_back(c);
+// Lines through an edge or a vertex that pieces of a surface share (triangles, parallelograms),
+// 3000 of them: pieces of size 0.05 to 2, every third 100 to 1000 units from the origin.
+// seam(sample, i, shift, size) makes line i and its pieces; each line must meet at least one of
+// them (the probe's `field`, s < kFar), as a closed surface needs. Prints the counts under `what`.
+struct SeamLine {
+  std::vector<Corners> pieces;
+  Vec3 o, d;
+};
+template <typename Seam>
+void expect_every_seam_line_meets_a_piece(uint64_t seed, Seam seam, F4 ProbeResult::*field,
+                                          const char* what) {
+  ProbeCaseMaker maker(GeometryKind::Euclidean, seed);
+  ModelSampler& sample = maker.sample();
+  std::vector<ProbeCase> cases;
+  std::vector<size_t> first;  // line l's cases, one per piece: [first[l], first[l + 1])
+  for (int i = 0; i < 3000; ++i) {
+    const Vec3 shift = i % 3 == 2 ? sample.uniform(100, 1000) * sample.unit3() : Vec3{};
+    const double size = sample.uniform(0.05, 2);
+    const SeamLine line = seam(sample, i, shift, size);
+    first.push_back(cases.size());
+    for (const Corners& piece : line.pieces) {
+      ProbeCase c = maker.make();
+      store_corners(c, {piece, line.o, line.d, kFar});
+      cases.push_back(c);
+    }
   }
+  first.push_back(cases.size());
+  const std::vector<ProbeResult> results = run_probe(GeometryKind::Euclidean, cases);
+  int holes = 0, double_hits = 0;
+  for (size_t l = 0; l + 1 < first.size(); ++l) {
+    int met = 0;
+    for (size_t k = first[l]; k < first[l + 1]; ++k) met += (results[k].*field)[0] < 1e29f;
+    holes += met == 0;
+    double_hits += met > 1;
+    EXPECT_GT(met, 0) << "line " << l << " passes between its pieces";
+  }
+  std::printf("%s: %zu lines, %d through none, %d meeting two or more\n", what,
+              first.size() - 1, holes, double_hits);
 }
 
 }  // namespace geodesic::test

@@ -64,13 +64,7 @@ TEST(ParallelogramProbe, FloatIntersectionMatchesTheDoubleTwin) {
 // points of the shared edge or at the corner, near and far from the origin, head-on and grazing:
 // each must meet at least one parallelogram.
 TEST(ParallelogramProbe, LinesThroughSharedEdgesAndCornersMeetAParallelogram) {
-  ProbeCaseMaker maker(GeometryKind::Euclidean, 4139);
-  ModelSampler& sample = maker.sample();
-  std::vector<ProbeCase> cases;
-  std::vector<SeamLine> lines;
-  for (int i = 0; i < 3000; ++i) {
-    const Vec3 shift = i % 3 == 2 ? sample.uniform(100, 1000) * sample.unit3() : Vec3{};
-    const double size = sample.uniform(0.05, 2);
+  const auto seam = [](ModelSampler& sample, int i, const Vec3& shift, double size) {
     const Vec3 e = shift + size * sample.ball(1);  // a shared corner
     const Vec3 x = normalize(sample.unit3()), y0 = normalize(cross(x, sample.unit3()));
     const Vec3 z0 = cross(x, y0);
@@ -96,10 +90,10 @@ TEST(ParallelogramProbe, LinesThroughSharedEdgesAndCornersMeetAParallelogram) {
     Vec3 d = sample.unit3();
     if (i % 4 == 1) d = normalize(d + std::tan(sample.uniform(0.01, 0.1)) * normalize(x));
     const Vec3 o = target - sample.uniform(0.1, 3) * (1 + size) * d;
-    add_seam_line(maker, walls, o, d, cases, lines);
-  }
-  expect_every_line_meets_a_piece(run_probe(GeometryKind::Euclidean, cases), lines,
-                                  &ProbeResult::parallelogram, "shared edges and corners");
+    return SeamLine{walls, o, d};
+  };
+  expect_every_seam_line_meets_a_piece(4139, seam, &ProbeResult::parallelogram,
+                                       "shared edges and corners");
 }
 
 // The twin against the double triangle test on the two halves: where the parallelogram is met

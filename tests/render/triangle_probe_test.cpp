@@ -62,13 +62,7 @@ TEST(TriangleProbe, FloatIntersectionMatchesTheDoubleTwin) {
 // points of the diagonal and at the vertex itself, near and far from the origin, head-on and
 // grazing: each line must meet at least one of the triangles, as a closed surface needs.
 TEST(TriangleProbe, LinesThroughSharedEdgesAndVerticesMeetATriangle) {
-  ProbeCaseMaker maker(GeometryKind::Euclidean, 4127);
-  ModelSampler& sample = maker.sample();
-  std::vector<ProbeCase> cases;
-  std::vector<SeamLine> lines;
-  for (int i = 0; i < 3000; ++i) {
-    const Vec3 shift = i % 3 == 2 ? sample.uniform(100, 1000) * sample.unit3() : Vec3{};
-    const double size = sample.uniform(0.05, 2);
+  const auto seam = [](ModelSampler& sample, int i, const Vec3& shift, double size) {
     const Vec3 centre = shift + size * sample.ball(1);
     const Vec3 n = sample.unit3();
     const Vec3 e1 = normalize(cross(n, sample.unit3())), e2 = cross(n, e1);
@@ -92,10 +86,10 @@ TEST(TriangleProbe, LinesThroughSharedEdgesAndVerticesMeetATriangle) {
     if (i % 4 == 1) d = normalize(d - dot(d, n) * n + std::tan(sample.uniform(0.01, 0.1)) * n);
     if (std::abs(dot(d, n)) < 1e-3) d = n;
     const Vec3 o = target - sample.uniform(0.1, 3) * (1 + size) * d;
-    add_seam_line(maker, triangles, o, d, cases, lines);
-  }
-  expect_every_line_meets_a_piece(run_probe(GeometryKind::Euclidean, cases), lines,
-                                  &ProbeResult::triangle, "shared edges and vertices");
+    return SeamLine{triangles, o, d};
+  };
+  expect_every_seam_line_meets_a_piece(4127, seam, &ProbeResult::triangle,
+                                       "shared edges and vertices");
 }
 
 }  // namespace
