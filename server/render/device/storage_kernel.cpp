@@ -10,32 +10,42 @@ namespace geodesic {
 StorageKernel::StorageKernel(VulkanContext& ctx, std::span<const uint32_t> spirv, uint32_t buffers,
                              uint32_t push_bytes)
     : ctx_(ctx), buffers_(buffers), push_bytes_(push_bytes) {
+  try {
+    create(spirv);
+  } catch (...) {
+    release();  // what was made before the failing call; the destructor does not run
+    throw;
+  }
+}
+
+void StorageKernel::create(std::span<const uint32_t> spirv) {
+  const uint32_t buffers = buffers_;
   std::vector<VkDescriptorSetLayoutBinding> bindings(buffers);
   for (uint32_t i = 0; i < buffers; ++i)
     bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
   VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
   set_info.bindingCount = buffers;
   set_info.pBindings = bindings.data();
-  vk_check(vkCreateDescriptorSetLayout(ctx.device(), &set_info, nullptr, &set_layout_),
+  vk_check(vkCreateDescriptorSetLayout(ctx_.device(), &set_info, nullptr, &set_layout_),
            "vkCreateDescriptorSetLayout");
 
-  const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, push_bytes};
+  const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, push_bytes_};
   VkPipelineLayoutCreateInfo layout_info{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
   layout_info.setLayoutCount = 1;
   layout_info.pSetLayouts = &set_layout_;
   layout_info.pushConstantRangeCount = 1;
   layout_info.pPushConstantRanges = &push;
-  vk_check(vkCreatePipelineLayout(ctx.device(), &layout_info, nullptr, &layout_),
+  vk_check(vkCreatePipelineLayout(ctx_.device(), &layout_info, nullptr, &layout_),
            "vkCreatePipelineLayout");
 
-  ShaderModule module(ctx.device(), spirv);
+  ShaderModule module(ctx_.device(), spirv);
   VkComputePipelineCreateInfo info{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
   info.stage.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
   info.stage.stage = VK_SHADER_STAGE_COMPUTE_BIT;
   info.stage.module = module.handle();
   info.stage.pName = "main";
   info.layout = layout_;
-  vk_check(vkCreateComputePipelines(ctx.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_),
+  vk_check(vkCreateComputePipelines(ctx_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_),
            "vkCreateComputePipelines");
 
   const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers};
@@ -43,16 +53,19 @@ StorageKernel::StorageKernel(VulkanContext& ctx, std::span<const uint32_t> spirv
   pool_info.maxSets = 1;
   pool_info.poolSizeCount = 1;
   pool_info.pPoolSizes = &size;
-  vk_check(vkCreateDescriptorPool(ctx.device(), &pool_info, nullptr, &pool_),
+  vk_check(vkCreateDescriptorPool(ctx_.device(), &pool_info, nullptr, &pool_),
            "vkCreateDescriptorPool");
   VkDescriptorSetAllocateInfo alloc{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
   alloc.descriptorPool = pool_;
   alloc.descriptorSetCount = 1;
   alloc.pSetLayouts = &set_layout_;
-  vk_check(vkAllocateDescriptorSets(ctx.device(), &alloc, &set_), "vkAllocateDescriptorSets");
+  vk_check(vkAllocateDescriptorSets(ctx_.device(), &alloc, &set_), "vkAllocateDescriptorSets");
 }
 
-StorageKernel::~StorageKernel() {
+StorageKernel::~StorageKernel() { release(); }
+
+// Destroying a null handle does nothing, so this frees whatever create() got to.
+void StorageKernel::release() {
   vkDestroyDescriptorPool(ctx_.device(), pool_, nullptr);
   vkDestroyPipeline(ctx_.device(), pipeline_, nullptr);
   vkDestroyPipelineLayout(ctx_.device(), layout_, nullptr);

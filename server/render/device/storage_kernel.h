@@ -29,6 +29,9 @@ class StorageKernel {
   void record(VkCommandBuffer cmd, const void* push, uint32_t groups) const;
 
  private:
+  void create(std::span<const uint32_t> spirv);
+  void release();
+
   VulkanContext& ctx_;
   uint32_t buffers_;
   uint32_t push_bytes_;
