@@ -19,12 +19,11 @@ StorageKernel::StorageKernel(VulkanContext& ctx, std::span<const uint32_t> spirv
 }
 
 void StorageKernel::create(std::span<const uint32_t> spirv) {
-  const uint32_t buffers = buffers_;
-  std::vector<VkDescriptorSetLayoutBinding> bindings(buffers);
-  for (uint32_t i = 0; i < buffers; ++i)
+  std::vector<VkDescriptorSetLayoutBinding> bindings(buffers_);
+  for (uint32_t i = 0; i < buffers_; ++i)
     bindings[i] = {i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr};
   VkDescriptorSetLayoutCreateInfo set_info{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
-  set_info.bindingCount = buffers;
+  set_info.bindingCount = buffers_;
   set_info.pBindings = bindings.data();
   vk_check(vkCreateDescriptorSetLayout(ctx_.device(), &set_info, nullptr, &set_layout_),
            "vkCreateDescriptorSetLayout");
@@ -48,7 +47,7 @@ void StorageKernel::create(std::span<const uint32_t> spirv) {
   vk_check(vkCreateComputePipelines(ctx_.device(), VK_NULL_HANDLE, 1, &info, nullptr, &pipeline_),
            "vkCreateComputePipelines");
 
-  const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers};
+  const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, buffers_};
   VkDescriptorPoolCreateInfo pool_info{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   pool_info.maxSets = 1;
   pool_info.poolSizeCount = 1;
